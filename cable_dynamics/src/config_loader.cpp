@@ -1,0 +1,340 @@
+#include "cable_dynamics/config_loader.h"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+namespace cable_dynamics {
+namespace {
+
+constexpr int kMaxLinks = 10000;
+
+std::string describe(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "(missing)";
+  YAML::Emitter out;
+  out << YAML::Flow << node;
+  return out.c_str();
+}
+
+std::string join(const std::string& section, const std::string& key) {
+  return section.empty() ? key : section + "." + key;
+}
+
+/// One section of the config: typed reads with range checks, and a check that no other keys are present.
+class Section {
+ public:
+  Section(const YAML::Node& node, std::string path) : node_(node), path_(std::move(path)) {
+    if (node_.IsDefined() && !node_.IsNull() && !node_.IsMap()) {
+      throw ConfigError(path_, describe(node_), "a mapping of keys");
+    }
+  }
+
+  bool has(const std::string& key) {
+    known_.insert(key);
+    return node_.IsDefined() && !node_.IsNull() && at(key).IsDefined() && !at(key).IsNull();
+  }
+
+  Section sub(const std::string& key) {
+    known_.insert(key);
+    return Section(has(key) ? at(key) : YAML::Node(), join(path_, key));
+  }
+
+  /// A finite number in [lo, hi]; `lo_open` makes the lower bound exclusive. `unit` is for messages.
+  double number(const std::string& key, double fallback, double lo, double hi, bool lo_open, const char* unit,
+                bool required = false) {
+    if (!has(key)) {
+      if (required) throw ConfigError(join(path_, key), "(missing)", rangeText(lo, hi, lo_open, unit));
+      return fallback;
+    }
+    return checkNumber(at(key), join(path_, key), lo, hi, lo_open, unit);
+  }
+
+  int integer(const std::string& key, int fallback, int lo, int hi, bool required) {
+    const std::string full = join(path_, key);
+    const std::string expected = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!has(key)) {
+      if (required) throw ConfigError(full, "(missing)", expected);
+      return fallback;
+    }
+    const YAML::Node& v = at(key);
+    long value = 0;
+    try {
+      if (!v.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "not a scalar");
+      const std::string text = v.Scalar();
+      std::size_t used = 0;
+      value = std::stol(text, &used);
+      if (used != text.size()) throw std::invalid_argument("trailing characters");
+    } catch (const std::exception&) {
+      throw ConfigError(full, describe(v), expected);
+    }
+    if (value < lo || value > hi) throw ConfigError(full, describe(v), expected);
+    return static_cast<int>(value);
+  }
+
+  std::string choice(const std::string& key, const std::string& fallback, const std::set<std::string>& allowed) {
+    if (!has(key)) return fallback;
+    const YAML::Node& v = at(key);
+    std::string expected = "one of";
+    for (const auto& a : allowed) expected += " " + a;
+    if (!v.IsScalar() || allowed.count(v.Scalar()) == 0) throw ConfigError(join(path_, key), describe(v), expected);
+    return v.Scalar();
+  }
+
+  /// A scalar (applied to every joint) or a list of exactly `count` numbers, each in [lo, hi].
+  std::vector<double> perJoint(const std::string& key, int count, double lo, double hi, const char* unit) {
+    const std::string full = join(path_, key);
+    if (!has(key)) return std::vector<double>(count, 0.0);
+    const YAML::Node& v = at(key);
+    if (v.IsSequence()) {
+      if (static_cast<int>(v.size()) != count) {
+        throw ConfigError(full, describe(v), "a number or a list of " + std::to_string(count) + " numbers (one per joint)");
+      }
+      std::vector<double> out;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        out.push_back(checkNumber(v[i], full + "[" + std::to_string(i) + "]", lo, hi, false, unit));
+      }
+      return out;
+    }
+    return std::vector<double>(count, checkNumber(v, full, lo, hi, false, unit));
+  }
+
+  /// A list of exactly `count` finite numbers, each in [lo, hi] (lo exclusive when `lo_open`).
+  std::vector<double> numberList(const std::string& key, int count, double lo, double hi, bool lo_open,
+                                 const char* unit) {
+    const std::string full = join(path_, key);
+    const YAML::Node& v = at(key);
+    if (!v.IsSequence() || static_cast<int>(v.size()) != count) {
+      throw ConfigError(full, describe(v), "a list of " + std::to_string(count) + " numbers");
+    }
+    std::vector<double> out;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      out.push_back(checkNumber(v[i], full + "[" + std::to_string(i) + "]", lo, hi, lo_open, unit));
+    }
+    return out;
+  }
+
+  /// Every key present must have been asked for: a misspelt key is an error, never silently ignored.
+  void rejectUnknownKeys() const {
+    if (!node_.IsDefined() || node_.IsNull()) return;
+    for (const auto& kv : node_) {
+      const std::string key = kv.first.as<std::string>();
+      if (known_.count(key) == 0) {
+        std::string expected = "no such key; known keys here:";
+        for (const auto& k : known_) expected += " " + k;
+        throw ConfigError(join(path_, key), describe(kv.second), expected);
+      }
+    }
+  }
+
+  const std::string& path() const { return path_; }
+
+ private:
+  /// Read-only lookup: yaml-cpp's non-const operator[] would insert the key into the tree.
+  YAML::Node at(const std::string& key) const {
+    const YAML::Node& node = node_;
+    return node[key];
+  }
+
+  static std::string rangeText(double lo, double hi, bool lo_open, const char* unit) {
+    std::ostringstream s;
+    s << "a finite number";
+    if (std::isfinite(lo) && std::isfinite(hi)) {
+      s << " in " << (lo_open ? "(" : "[") << lo << ", " << hi << "]";
+    } else if (std::isfinite(lo)) {
+      s << (lo_open ? " > " : " >= ") << lo;
+    } else if (std::isfinite(hi)) {
+      s << " <= " << hi;
+    }
+    if (unit != nullptr && *unit != '\0') s << " [" << unit << "]";
+    return s.str();
+  }
+
+  static double checkNumber(const YAML::Node& v, const std::string& full, double lo, double hi, bool lo_open,
+                            const char* unit) {
+    const std::string expected = rangeText(lo, hi, lo_open, unit);
+    double value = 0.0;
+    try {
+      if (!v.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "not a scalar");
+      value = v.as<double>();
+    } catch (const YAML::Exception&) {
+      throw ConfigError(full, describe(v), expected);
+    }
+    const bool below = lo_open ? !(value > lo) : !(value >= lo);
+    if (!std::isfinite(value) || below || value > hi) throw ConfigError(full, describe(v), expected);
+    return value;
+  }
+
+  YAML::Node node_;
+  std::string path_;
+  std::set<std::string> known_;
+};
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+void parseCable(Section cable, CableParams& p) {
+  p.links = cable.integer("links", 1, 1, kMaxLinks, true);
+  if (cable.has("link_lengths")) {
+    // The list overrides `length`: the total length is then the sum of the list.
+    p.link_lengths = cable.numberList("link_lengths", p.links, 0.0, 1e5, true, "m");
+    cable.number("length", 0.0, 0.0, 1e5, true, "m");  // still validated when present
+  } else {
+    const double total = cable.number("length", 0.0, 0.0, 1e5, true, "m", true);
+    p.link_lengths.assign(p.links, total / p.links);
+  }
+  p.diameter = cable.number("diameter", 0.0, 0.0, 10.0, true, "m", true);
+  const bool has_linear_density = cable.has("mass_per_length");
+  const bool has_material_density = cable.has("material_density");
+  if (has_linear_density == has_material_density) {
+    throw ConfigError(cable.path() + ".mass_per_length", has_linear_density ? "given with material_density" : "(missing)",
+                      "exactly one of cable.mass_per_length [kg/m] or cable.material_density [kg/m^3]");
+  }
+  if (has_linear_density) {
+    p.mass_per_length = cable.number("mass_per_length", 0.0, 0.0, 1e5, true, "kg/m");
+  } else {
+    const double rho = cable.number("material_density", 0.0, 0.0, 1e5, true, "kg/m^3");
+    p.mass_per_length = rho * M_PI * 0.25 * p.diameter * p.diameter;
+  }
+
+  Section stiffness = cable.sub("stiffness");
+  const std::string model = stiffness.choice("model", "paper", {"paper", "bending"});
+  p.stiffness.model = model == "paper" ? StiffnessModel::kPaper : StiffnessModel::kBending;
+  p.stiffness.elevation = stiffness.number("elevation", 0.0, 0.0, kInf, false, "N m/rad");
+  p.stiffness.azimuth = stiffness.number("azimuth", 0.0, 0.0, kInf, false, "N m/rad");
+  p.stiffness.torsion = stiffness.number("torsion", 0.0, 0.0, kInf, false, "N m/rad");
+  p.stiffness.bending_rigidity = stiffness.number("bending_rigidity", 0.0, 0.0, kInf, false, "N m^2");
+  p.stiffness.torsional_rigidity = stiffness.number("torsional_rigidity", 0.0, 0.0, kInf, false, "N m^2");
+  if (p.stiffness.bending_rigidity > 0.0 && (p.stiffness.elevation > 0.0 || p.stiffness.azimuth > 0.0)) {
+    throw ConfigError(stiffness.path() + ".bending_rigidity", std::to_string(p.stiffness.bending_rigidity),
+                      "0 when stiffness.elevation or stiffness.azimuth is given (one or the other)");
+  }
+  if (p.stiffness.torsional_rigidity > 0.0 && p.stiffness.torsion > 0.0) {
+    throw ConfigError(stiffness.path() + ".torsional_rigidity", std::to_string(p.stiffness.torsional_rigidity),
+                      "0 when stiffness.torsion is given (one or the other)");
+  }
+  if (p.stiffness.model == StiffnessModel::kBending && p.stiffness.azimuth != p.stiffness.elevation &&
+      p.stiffness.azimuth != 0.0) {
+    // One bending spring acts in every bending direction: a separate azimuth spring has no meaning there.
+    throw ConfigError(stiffness.path() + ".azimuth", std::to_string(p.stiffness.azimuth),
+                      "0 or equal to stiffness.elevation with model: bending (the bend spring is elevation)");
+  }
+  stiffness.rejectUnknownKeys();
+
+  Section damping = cable.sub("damping");
+  p.damping.elevation = damping.number("elevation", 0.0, 0.0, kInf, false, "N m s/rad");
+  p.damping.azimuth = damping.number("azimuth", 0.0, 0.0, kInf, false, "N m s/rad");
+  p.damping.torsion = damping.number("torsion", 0.0, 0.0, kInf, false, "N m s/rad");
+  damping.rejectUnknownKeys();
+  cable.rejectUnknownKeys();
+}
+
+void parseLoad(Section load, CableParams& p) {
+  p.load.mass = load.number("mass", 0.0, 0.0, 1e7, false, "kg");
+  p.load.volume = load.number("volume", 0.0, 0.0, 1e4, false, "m^3");
+  const std::string mode = load.choice("mode", "free", {"free", "anchored", "attached"});
+  p.load.mode = mode == "free" ? LoadMode::kFree : mode == "anchored" ? LoadMode::kAnchored : LoadMode::kAttached;
+  p.load.drag_area = load.number("drag_area", 0.0, 0.0, 1e4, false, "m^2");
+  p.load.added_mass = load.number("added_mass", 0.0, 0.0, 1e7, false, "kg");
+  load.rejectUnknownKeys();
+}
+
+void parseFluid(Section fluid, CableParams& p) {
+  p.fluid.density = fluid.number("density", 1025.0, 0.0, 2.0e4, false, "kg/m^3");
+  p.fluid.drag_normal = fluid.number("drag_normal", 1.2, 0.0, 100.0, false, "");
+  p.fluid.drag_tangential = fluid.number("drag_tangential", 0.01, 0.0, 100.0, false, "");
+  p.fluid.added_mass = fluid.number("added_mass", 1.0, 0.0, 100.0, false, "");
+  if (fluid.has("current")) {
+    const std::vector<double> c = fluid.numberList("current", 3, -100.0, 100.0, false, "m/s");
+    p.fluid.current = Eigen::Vector3d(c[0], c[1], c[2]);
+  }
+  fluid.rejectUnknownKeys();
+}
+
+}  // namespace
+
+ConfigError::ConfigError(const std::string& key, const std::string& value, const std::string& expected)
+    : std::invalid_argument("config key '" + key + "' = " + value + ": expected " + expected), key_(key) {}
+
+CableParams parseConfig(const YAML::Node& root) {
+  Section top(root, "");
+  CableParams p;
+  if (!top.has("cable")) throw ConfigError("cable", "(missing)", "a mapping with links, length, diameter, ...");
+  parseCable(top.sub("cable"), p);
+  parseLoad(top.sub("load"), p);
+  parseFluid(top.sub("fluid"), p);
+  p.gravity = top.number("gravity", 9.81, 0.0, 100.0, false, "m/s^2");
+
+  Section initial = top.sub("initial");
+  p.initial.elevation = initial.perJoint("elevation", p.links, -M_PI, M_PI, "rad");
+  p.initial.azimuth = initial.perJoint("azimuth", p.links, -M_PI, M_PI, "rad");
+  p.initial.torsion = initial.perJoint("torsion", p.links, -1e3, 1e3, "rad");
+  initial.rejectUnknownKeys();
+
+  Section simulation = top.sub("simulation");
+  p.simulation.dt = simulation.number("dt", 0.001, 0.0, 0.1, true, "s");
+  p.simulation.integrator = simulation.choice("integrator", "rk4", {"rk4"});
+  simulation.rejectUnknownKeys();
+  top.rejectUnknownKeys();
+  return p;
+}
+
+void applyOverride(YAML::Node& root, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw ConfigError(assignment, "(no '=')", "key.path=value, e.g. cable.links=10");
+  }
+  const std::string path = assignment.substr(0, eq);
+  YAML::Node value;
+  try {
+    value = YAML::Load(assignment.substr(eq + 1));
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path, assignment.substr(eq + 1), std::string("a YAML value (") + e.what() + ")");
+  }
+  std::vector<std::string> parts;
+  std::stringstream stream(path);
+  for (std::string part; std::getline(stream, part, '.');) {
+    if (part.empty()) throw ConfigError(path, assignment.substr(eq + 1), "a dotted key path without empty parts");
+    parts.push_back(part);
+  }
+  // yaml-cpp nodes are handles: walk down with fresh handles (operator= on a handle would overwrite).
+  std::vector<YAML::Node> chain{root};
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    YAML::Node next = chain.back()[parts[i]];
+    if (next.IsDefined() && !next.IsNull() && !next.IsMap()) {
+      throw ConfigError(path, assignment.substr(eq + 1), "'" + parts[i] + "' to be a mapping");
+    }
+    chain.push_back(next);
+  }
+  chain.back()[parts.back()] = value;
+}
+
+namespace {
+CableParams parseWithOverrides(YAML::Node root, const std::vector<std::string>& overrides) {
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  for (const auto& o : overrides) applyOverride(root, o);
+  return parseConfig(root);
+}
+}  // namespace
+
+CableParams loadConfigFile(const std::string& path, const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("(file)", path, std::string("a readable YAML file: ") + e.what());
+  }
+  return parseWithOverrides(root, overrides);
+}
+
+CableParams loadConfigString(const std::string& yaml_text, const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("(text)", "", std::string("valid YAML: ") + e.what());
+  }
+  return parseWithOverrides(root, overrides);
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs what the tests need, builds, and runs every test (gtest, pytest, rostest) through catkin.
+# Exits non-zero when the build or any test fails; the last line is the summary.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+install_debian_packages
+build_workspace
+source_devel_space
+
+rm -rf "$WS_DIR/build/test_results"
+# `run_tests` itself does not fail on a failing test; catkin_test_results does, below.
+catkin_make -C "$WS_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1
+
+set +e
+results="$(catkin_test_results --verbose "$WS_DIR/build/test_results")"
+status=$?
+set -e
+echo "$results"
+summary="$(echo "$results" | grep -E '^Summary: ' | tail -n 1)"
+if [[ "$summary" =~ ([0-9]+)\ tests,\ ([0-9]+)\ errors,\ ([0-9]+)\ failures,\ ([0-9]+)\ skipped ]]; then
+  total=${BASH_REMATCH[1]} errors=${BASH_REMATCH[2]} failures=${BASH_REMATCH[3]} skipped=${BASH_REMATCH[4]}
+  failed=$((errors + failures))
+  passed=$((total - failed - skipped))
+  ((total > 0)) || { echo "no tests ran"; status=1; }
+  echo "tests: ${passed} passed, ${failed} failed, ${skipped} skipped"
+else
+  echo "could not read the test summary"
+  status=1
+fi
+exit $status

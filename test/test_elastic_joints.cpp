@@ -1,0 +1,154 @@
+// Joint springs: the paper's diagonal K, and the bending/twist energy checked against an independent
+// computation from rotation matrices (bend angle between axes, twist after parallel transport).
+#include <cmath>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "cable_dynamics/config_loader.h"
+#include "cable_dynamics/elastic_joints.h"
+#include "cable_dynamics/states.h"
+#include "cable_dynamics/paper_model.h"
+
+using namespace cable_dynamics;
+
+namespace {
+
+LinkProperties makeProperties(int n, const std::string& stiffness) {
+  return deriveLinkProperties(loadConfigString(R"(
+cable: {links: 1, length: 1.0, diameter: 0.03, mass_per_length: 0.8}
+)",
+                                               {"cable.links=" + std::to_string(n), "cable.stiffness=" + stiffness,
+                                                "cable.damping={elevation: 0.1, azimuth: 0.2, torsion: 0.3}"}));
+}
+
+Eigen::Matrix3d linkRotation(double te, double psi, double phi) {
+  using Eigen::AngleAxisd;
+  return (AngleAxisd(-psi, Eigen::Vector3d::UnitZ()) * AngleAxisd(-te, Eigen::Vector3d::UnitX()) *
+          AngleAxisd(-phi, Eigen::Vector3d::UnitZ()))
+      .toRotationMatrix();
+}
+
+/// Twist of `child` relative to `parent` about the child's axis (body z), after carrying the parent's
+/// frame onto the child's axis by the minimal rotation (parallel transport).
+double twistByParallelTransport(const Eigen::Matrix3d& parent, const Eigen::Matrix3d& child) {
+  const Eigen::Quaterniond transport =
+      Eigen::Quaterniond::FromTwoVectors(parent.col(2), child.col(2));
+  const Eigen::Matrix3d carried = transport.toRotationMatrix() * parent;
+  const Eigen::Matrix3d relative = carried.transpose() * child;  // a rotation about body z
+  return std::atan2(relative(1, 0), relative(0, 0));
+}
+
+double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+}  // namespace
+
+TEST(ElasticJoints, PaperModelIsDiagonal) {
+  const LinkProperties p = makeProperties(3, "{elevation: 2.0, azimuth: 3.0, torsion: 5.0}");
+  ElasticJoints joints(p);
+  Eigen::VectorXd q, qd;
+  randomState(3, 4u, q, qd);
+  Eigen::VectorXd f(9);
+  Eigen::MatrixXd K(9, 9), D(9, 9);
+  joints.force(q, f);
+  joints.stiffness(q, K);
+  joints.damping(D);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(f(3 * k), 2.0 * q(3 * k));
+    EXPECT_DOUBLE_EQ(f(3 * k + 1), 3.0 * q(3 * k + 1));
+    EXPECT_DOUBLE_EQ(f(3 * k + 2), 5.0 * q(3 * k + 2));
+    EXPECT_DOUBLE_EQ(D(3 * k + 2, 3 * k + 2), 0.3);
+  }
+  EXPECT_DOUBLE_EQ((K - Eigen::MatrixXd(K.diagonal().asDiagonal())).norm(), 0.0);
+  EXPECT_NEAR(joints.energy(q), 0.5 * q.dot(f), 1e-12);
+}
+
+TEST(ElasticJoints, BendAndTwistMatchRotationMatrices) {
+  const int n = 5;
+  const LinkProperties p = makeProperties(n, "{model: bending, elevation: 2.0, torsion: 5.0}");
+  ElasticJoints joints(p);
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    Eigen::VectorXd q, qd;
+    randomState(n, seed, q, qd);
+    Eigen::Matrix3d parent = Eigen::Matrix3d::Identity();  // the base: axis straight down, no twist
+    double psi = 0, phi = 0, expected_energy = 0;
+    for (int k = 0; k < n; ++k) {
+      psi += q(3 * k + 1);
+      phi += q(3 * k + 2);
+      const Eigen::Matrix3d child = linkRotation(q(3 * k), psi, phi);
+      ASSERT_NEAR((child.col(2) - linkAxis(q(3 * k), psi)).norm(), 0.0, 1e-14);
+      const double bend_expected = std::acos(std::clamp(parent.col(2).dot(child.col(2)), -1.0, 1.0));
+      const double twist_expected = twistByParallelTransport(parent, child);
+      double bend = 0, twist = 0;
+      joints.bendAndTwist(q, k, bend, twist);
+      EXPECT_NEAR(bend, bend_expected, 1e-9) << "joint " << k + 1;
+      EXPECT_NEAR(wrapAngle(twist - twist_expected), 0.0, 1e-9) << "joint " << k + 1;
+      expected_energy += 0.5 * 2.0 * bend_expected * bend_expected + 0.5 * 5.0 * twist * twist;
+      parent = child;
+    }
+    EXPECT_NEAR(joints.energy(q), expected_energy, 1e-9 * expected_energy);
+  }
+}
+
+TEST(ElasticJoints, BendingForceAndStiffnessAreDerivativesOfEnergy) {
+  const int n = 4;
+  const LinkProperties p = makeProperties(n, "{model: bending, elevation: 2.0, torsion: 5.0}");
+  ElasticJoints joints(p);
+  const int dof = 3 * n;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    Eigen::VectorXd q, qd;
+    randomState(n, 30u + seed, q, qd);
+    Eigen::VectorXd f(dof), fp(dof), fm(dof);
+    Eigen::MatrixXd K(dof, dof);
+    joints.force(q, f);
+    joints.stiffness(q, K);
+    const double eps = 1e-6;
+    for (int i = 0; i < dof; ++i) {
+      Eigen::VectorXd qp = q, qm = q;
+      qp(i) += eps;
+      qm(i) -= eps;
+      // Central differences: error ~ eps^2 * third derivative + 1e-16 * energy / eps.
+      EXPECT_NEAR(f(i), (joints.energy(qp) - joints.energy(qm)) / (2 * eps), 1e-7) << coordinateName(i);
+      joints.force(qp, fp);
+      joints.force(qm, fm);
+      const Eigen::VectorXd column = (fp - fm) / (2 * eps);
+      EXPECT_LT((K.col(i) - column).cwiseAbs().maxCoeff(), 1e-6) << coordinateName(i);
+    }
+    EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-12);
+  }
+}
+
+TEST(ElasticJoints, BendingModelIsRegularAtTheVertical) {
+  const int n = 3;
+  const LinkProperties p = makeProperties(n, "{model: bending, elevation: 2.0, torsion: 5.0}");
+  ElasticJoints joints(p);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(3 * n), f(3 * n);
+  Eigen::MatrixXd K(3 * n, 3 * n);
+  joints.force(q, f);
+  joints.stiffness(q, K);
+  EXPECT_TRUE(f.allFinite());
+  EXPECT_TRUE(K.allFinite());
+  EXPECT_DOUBLE_EQ(f.norm(), 0.0);
+  // Straight down, a twist of link 2 about the vertical may be written as azimuth or torsion: same energy.
+  Eigen::VectorXd by_azimuth = q, by_torsion = q;
+  by_azimuth(3 * 1 + 1) = 0.3;
+  by_azimuth(3 * 2 + 1) = -0.3;
+  by_torsion(3 * 1 + 2) = 0.3;
+  by_torsion(3 * 2 + 2) = -0.3;
+  EXPECT_NEAR(joints.energy(by_azimuth), joints.energy(by_torsion), 1e-14);
+  EXPECT_NEAR(joints.energy(by_torsion), 2 * 0.5 * 5.0 * 0.3 * 0.3, 1e-14);
+}
+
+TEST(ElasticJoints, BendingEnergyInvariantToRotationAboutVertical) {
+  // Rotating the whole cable about the vertical (a_1 -> a_1 + d, t_1 -> t_1 - d keeps the base twist)
+  // leaves every bend and twist unchanged.
+  const int n = 4;
+  const LinkProperties p = makeProperties(n, "{model: bending, elevation: 2.0, torsion: 5.0}");
+  ElasticJoints joints(p);
+  Eigen::VectorXd q, qd;
+  randomState(n, 77u, q, qd);
+  Eigen::VectorXd turned = q;
+  turned(1) += 0.7;
+  turned(2) -= 0.7;
+  EXPECT_NEAR(joints.energy(turned), joints.energy(q), 1e-12 * joints.energy(q));
+}

@@ -1,0 +1,31 @@
+# Tests, run by `catkin_make run_tests` (see scripts/test.sh). Included from the root CMakeLists.txt.
+
+# Core library, no roscore.
+catkin_add_gtest(test_config_loader test/test_config_loader.cpp)
+target_link_libraries(test_config_loader cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_config_loader PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
+catkin_add_gtest(test_paper_model test/test_paper_model.cpp)
+target_link_libraries(test_paper_model cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+catkin_add_gtest(test_elastic_joints test/test_elastic_joints.cpp)
+target_link_libraries(test_elastic_joints cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+catkin_add_gtest(test_cable_model_cli test/test_cable_model_cli.cpp)
+target_link_libraries(test_cable_model_cli cable_dynamics_tools ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_cable_model_cli PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
+# Python tests (Debian's python3 with sympy/numpy/pytest), registered like catkin's own test types so
+# that catkin_test_results counts them.
+set(CABLE_PYTHON /usr/bin/python3)
+function(cable_add_pytest name file)
+  set(xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/pytest-${name}.xml)
+  catkin_run_tests_target("pytest" ${name} "pytest-${name}.xml"
+    COMMAND "${CMAKE_COMMAND} -E env ${ARGN} ${CABLE_PYTHON} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_SOURCE_DIR}/${file} --junitxml=${xml}"
+    WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
+endfunction()
+
+cable_add_pytest(sympy_reference test/test_sympy_reference.py
+  CABLE_MODEL_BIN=$<TARGET_FILE:cable_model> CABLE_TEST_CONFIG=${CMAKE_CURRENT_SOURCE_DIR}/config/default.yaml)
+cable_add_pytest(messages_visible test/test_messages_visible.py)
+add_dependencies(run_tests_cable_dynamics_pytest_sympy_reference cable_model)
