@@ -30,13 +30,14 @@ Eigen::Matrix3d linkRotation(double te, double psi, double phi) {
 }
 
 /// Twist of `child` relative to `parent` about the child's axis (body z), after carrying the parent's
-/// frame onto the child's axis by the minimal rotation (parallel transport).
+/// frame onto the child's axis by the minimal rotation (parallel transport). The paper's Euler angles
+/// turn a link by Rz(-phi), so a positive torsion is a negative rotation about body z: hence the minus.
 double twistByParallelTransport(const Eigen::Matrix3d& parent, const Eigen::Matrix3d& child) {
   const Eigen::Quaterniond transport =
       Eigen::Quaterniond::FromTwoVectors(parent.col(2), child.col(2));
   const Eigen::Matrix3d carried = transport.toRotationMatrix() * parent;
   const Eigen::Matrix3d relative = carried.transpose() * child;  // a rotation about body z
-  return std::atan2(relative(1, 0), relative(0, 0));
+  return -std::atan2(relative(1, 0), relative(0, 0));
 }
 
 double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
