@@ -1,5 +1,6 @@
 // Config loader: every documented bad value is rejected with the key named; good configs load.
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -41,6 +42,16 @@ TEST(ConfigLoader, ShippedConfigsLoad) {
   EXPECT_DOUBLE_EQ(p.diameter, 0.025);
   EXPECT_DOUBLE_EQ(p.fluid.density, 1025.0);
   EXPECT_EQ(p.simulation.integrator, "rk4");
+}
+
+TEST(ConfigLoader, EveryShippedPresetLoads) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(CABLE_CONFIG_DIR)) {
+    if (entry.path().extension() != ".yaml") continue;
+    EXPECT_NO_THROW(loadConfigFile(entry.path().string())) << entry.path();
+    ++count;
+  }
+  EXPECT_GE(count, 6);
 }
 
 TEST(ConfigLoader, DefaultsForOptionalSections) {

@@ -29,3 +29,7 @@ cable_add_pytest(sympy_reference test/test_sympy_reference.py
   CABLE_MODEL_BIN=$<TARGET_FILE:cable_model> CABLE_TEST_CONFIG=${CMAKE_CURRENT_SOURCE_DIR}/config/default.yaml)
 cable_add_pytest(messages_visible test/test_messages_visible.py)
 add_dependencies(run_tests_cable_dynamics_pytest_sympy_reference cable_model)
+
+# ROS graph tests (rostest starts its own roscore).
+find_package(rostest REQUIRED)
+add_rostest(test/load_config.test)
