@@ -33,3 +33,6 @@ add_dependencies(run_tests_cable_dynamics_pytest_sympy_reference cable_model)
 # ROS graph tests (rostest starts its own roscore).
 find_package(rostest REQUIRED)
 add_rostest(test/load_config.test)
+
+catkin_add_gtest(test_chain_dynamics test/test_chain_dynamics.cpp)
+target_link_libraries(test_chain_dynamics cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

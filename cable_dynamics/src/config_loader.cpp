@@ -130,6 +130,12 @@ class Section {
 
   const std::string& path() const { return path_; }
 
+  /// The raw node of a key (marks it known).
+  YAML::Node raw(const std::string& key) {
+    known_.insert(key);
+    return at(key);
+  }
+
  private:
   /// Read-only lookup: yaml-cpp's non-const operator[] would insert the key into the tree.
   YAML::Node at(const std::string& key) const {
@@ -229,6 +235,22 @@ void parseCable(Section cable, CableParams& p) {
   cable.rejectUnknownKeys();
 }
 
+Eigen::Vector3d vector3(Section& s, const std::string& key, double limit, const char* unit) {
+  if (!s.has(key)) return Eigen::Vector3d::Zero();
+  const std::vector<double> v = s.numberList(key, 3, -limit, limit, false, unit);
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+MotionParams parseMotion(Section motion) {
+  MotionParams m;
+  m.offset = vector3(motion, "offset", 1e5, "m");
+  m.amplitude = vector3(motion, "amplitude", 1e4, "m");
+  m.period = motion.number("period", 10.0, 0.0, 1e6, true, "s");
+  m.velocity = vector3(motion, "velocity", 100.0, "m/s");
+  motion.rejectUnknownKeys();
+  return m;
+}
+
 void parseLoad(Section load, CableParams& p) {
   p.load.mass = load.number("mass", 0.0, 0.0, 1e7, false, "kg");
   p.load.volume = load.number("volume", 0.0, 0.0, 1e4, false, "m^3");
@@ -236,6 +258,11 @@ void parseLoad(Section load, CableParams& p) {
   p.load.mode = mode == "free" ? LoadMode::kFree : mode == "anchored" ? LoadMode::kAnchored : LoadMode::kAttached;
   p.load.drag_area = load.number("drag_area", 0.0, 0.0, 1e4, false, "m^2");
   p.load.added_mass = load.number("added_mass", 0.0, 0.0, 1e7, false, "kg");
+  Section coupling = load.sub("coupling");
+  p.load.coupling_stiffness = coupling.number("stiffness", 2.0e4, 0.0, 1e9, true, "N/m");
+  p.load.coupling_damping = coupling.number("damping", 2.0e3, 0.0, 1e9, false, "N s/m");
+  coupling.rejectUnknownKeys();
+  p.load.motion = parseMotion(load.sub("motion"));
   load.rejectUnknownKeys();
 }
 
@@ -244,9 +271,30 @@ void parseFluid(Section fluid, CableParams& p) {
   p.fluid.drag_normal = fluid.number("drag_normal", 1.2, 0.0, 100.0, false, "");
   p.fluid.drag_tangential = fluid.number("drag_tangential", 0.01, 0.0, 100.0, false, "");
   p.fluid.added_mass = fluid.number("added_mass", 1.0, 0.0, 100.0, false, "");
-  if (fluid.has("current")) {
-    const std::vector<double> c = fluid.numberList("current", 3, -100.0, 100.0, false, "m/s");
-    p.fluid.current = Eigen::Vector3d(c[0], c[1], c[2]);
+  p.fluid.current = vector3(fluid, "current", 100.0, "m/s");
+  p.fluid.drag_points = fluid.integer("drag_points", 3, 1, 8, false);
+  if (fluid.has("current_profile")) {
+    const YAML::Node rows = fluid.raw("current_profile");
+    const std::string key = fluid.path() + ".current_profile";
+    if (!rows.IsSequence() || rows.size() < 1) {
+      throw ConfigError(key, describe(rows), "a list of [depth m, current x, y, z m/s] rows");
+    }
+    double previous_depth = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      YAML::Node wrapper;
+      wrapper["row"] = rows[i];
+      Section row(wrapper, key + "[" + std::to_string(i) + "]");
+      const std::vector<double> v = row.numberList("row", 4, -1e5, 1e5, false, "m, m/s");
+      if (!(v[0] > previous_depth)) {
+        throw ConfigError(key + "[" + std::to_string(i) + "]", describe(rows[i]), "depths strictly increasing");
+      }
+      previous_depth = v[0];
+      p.fluid.current_profile.emplace_back(v[0], v[1], v[2], v[3]);
+    }
+    if (!p.fluid.current.isZero()) {
+      throw ConfigError(fluid.path() + ".current", describe(fluid.raw("current")),
+                        "[0, 0, 0] or absent when current_profile is given (one or the other)");
+    }
   }
   fluid.rejectUnknownKeys();
 }
@@ -262,6 +310,9 @@ CableParams parseConfig(const YAML::Node& root) {
   if (!top.has("cable")) throw ConfigError("cable", "(missing)", "a mapping with links, length, diameter, ...");
   parseCable(top.sub("cable"), p);
   parseLoad(top.sub("load"), p);
+  Section base = top.sub("base");
+  p.base.motion = parseMotion(base.sub("motion"));
+  base.rejectUnknownKeys();
   parseFluid(top.sub("fluid"), p);
   p.gravity = top.number("gravity", 9.81, 0.0, 100.0, false, "m/s^2");
 

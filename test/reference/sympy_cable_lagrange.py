@@ -88,13 +88,94 @@ def link_orientation(te, psi, phi):
     return rot_z(-psi) * rot_x(-te) * rot_z(-phi)
 
 
-class CableReference:
-    """Symbolic derivation for one n plus its lambdified numeric evaluators."""
 
-    def __init__(self, n):
+class _Derivation:
+    """Memoized derivation D on expression DAGs, given by its values on the symbols.
+
+    ``_Derivation({x: 1})`` is d/dx;  ``_Derivation({q_j: qd_j})`` is sum_j qd_j d/dq_j.
+    Applies the sum, product, power and chain rules (sin, cos) node by node and remembers the
+    result of every sub-expression, so shared sub-expressions (the expressions from the energy
+    are DAGs with heavy sharing) are differentiated once.  sympy.diff re-walks and re-checks
+    the whole result at every level, which makes h for n = 4 take minutes; the result here is
+    the same derivative (checked against sympy.diff by the tests for small n), just not slow.
+    Anything outside these node types raises instead of being guessed.
+    """
+
+    def __init__(self, seeds):
+        self.seeds = {sp.sympify(k): sp.sympify(v) for k, v in seeds.items()}
+        self.memo = {}
+
+    def __call__(self, expr):
+        expr = sp.sympify(expr)
+        try:
+            return self.memo[expr]
+        except KeyError:
+            pass
+        out = self._rule(expr)
+        self.memo[expr] = out
+        return out
+
+    def _rule(self, e):
+        zero = sp.S.Zero
+        if e.is_Symbol:
+            return self.seeds.get(e, zero)
+        if e.is_Number or e.is_NumberSymbol:
+            return zero
+        if e.is_Add:
+            terms = [d for d in map(self, e.args) if d is not zero]
+            return sp.Add(*terms) if terms else zero
+        if e.is_Mul:
+            args = e.args
+            terms = []
+            for i, a in enumerate(args):
+                da = self(a)
+                if da is not zero:
+                    terms.append(sp.Mul(*(args[:i] + (da,) + args[i + 1:])))
+            return sp.Add(*terms) if terms else zero
+        if e.is_Pow:
+            base, ex = e.args
+            if self(ex) is not zero:
+                raise TypeError("variable exponent not supported: %s" % (e,))
+            db = self(base)
+            if db is zero:
+                return zero
+            return ex * base ** (ex - 1) * db
+        if isinstance(e, sp.sin):
+            da = self(e.args[0])
+            return zero if da is zero else sp.cos(e.args[0]) * da
+        if isinstance(e, sp.cos):
+            da = self(e.args[0])
+            return zero if da is zero else -sp.sin(e.args[0]) * da
+        raise TypeError("cannot differentiate node of type %s" % type(e).__name__)
+
+
+class _Opaque(list):
+    """A list of expressions whose str() is short (see the lambdify call)."""
+
+    def __str__(self):
+        return "<cable reference expressions>"
+
+    __repr__ = __str__
+
+
+def _fast_cse(exprs):
+    """sympy.cse without canonical re-ordering (same result, several times faster here)."""
+    return sp.cse(exprs, order="none")
+
+
+class CableReference:
+    """Symbolic derivation for one n plus its lambdified numeric evaluators.
+
+    ``method="dag"`` differentiates with the memoized :class:`_Derivation` (fast, default);
+    ``method="sympy"`` uses plain ``sympy.diff`` for every derivative (slow; used by the tests
+    for small n to show that both give the same M, h, G).
+    """
+
+    def __init__(self, n, method="dag"):
         if n < 1:
             raise ValueError("n must be >= 1")
         self.n = n
+        self.method = method
         self.names = coordinate_names(n)
         timings = {}
         t0 = time.perf_counter()
@@ -166,29 +247,42 @@ class CableReference:
         timings["energies"] = time.perf_counter() - t0
 
         # --- Lagrange ---------------------------------------------------------------------
+        #   p = dT/dq',  M = dp/dq',  h = D p - dT/dq,  G = dV/dq,
+        # where D = sum_j q'_j d/dq_j is d/dt along a motion with q'' = 0, so D p is exactly
+        # (d/dt dT/dq')|_{q''=0}.
         t1 = time.perf_counter()
-        dT_dqd = [sp.diff(T, v) for v in qd]
         N = 3 * n
+        if method == "dag":
+            d_qd = [_Derivation({v: sp.S.One}) for v in qd]
+            d_q = [_Derivation({v: sp.S.One}) for v in q]
+            d_time = _Derivation(dict(zip(q, qd)))
+        elif method == "sympy":
+            d_qd = [lambda e, v=v: sp.diff(e, v) for v in qd]
+            d_q = [lambda e, v=v: sp.diff(e, v) for v in q]
+
+            def d_time(expr):
+                return sum((sp.diff(expr, qj) * vj for qj, vj in zip(q, qd)), sp.S.Zero)
+        else:
+            raise ValueError("method must be 'dag' or 'sympy'")
+        p = [d_qd[i](T) for i in range(N)]
         Mx = sp.zeros(N, N)
         for i in range(N):
             for j in range(i, N):
-                Mx[i, j] = sp.diff(dT_dqd[i], qd[j])
-                Mx[j, i] = Mx[i, j]  # Hessian: symmetric by construction (same expression)
-        hx = sp.zeros(N, 1)
-        for i in range(N):
-            hx[i] = sum((sp.diff(dT_dqd[i], q[j]) * qd[j] for j in range(N)), sp.S.Zero) - sp.diff(T, q[i])
-        Gx = sp.Matrix([sp.diff(V, v) for v in q])
+                Mx[i, j] = d_qd[j](p[i])
+                Mx[j, i] = Mx[i, j]  # a Hessian: symmetric, take the same expression
+        hx = sp.Matrix([d_time(p[i]) - d_q[i](T) for i in range(N)])
+        Gx = sp.Matrix([d_q[i](V) for i in range(N)])
         self.M_expr, self.h_expr, self.G_expr = Mx, hx, Gx
         timings["derivatives"] = time.perf_counter() - t1
 
         # --- numeric code -----------------------------------------------------------------
+        # One lambdify for (M, h, G) so that common sub-expressions are shared between them.
+        # The list wrapper only stops sympy 1.11's lambdify from str()-ing the whole
+        # unsimplified expression for its docstring (that alone took > 25 s for n = 3).
         t2 = time.perf_counter()
         args = self.param_syms + self.q_syms + self.qd_syms
-        self._M = sp.lambdify(args, Mx, modules="numpy", cse=True)
-        self._h = sp.lambdify(args, hx, modules="numpy", cse=True)
-        self._G = sp.lambdify(args, Gx, modules="numpy", cse=True)
-        self._T = sp.lambdify(args, T, modules="numpy", cse=True)
-        self._V = sp.lambdify(args, V, modules="numpy", cse=True)
+        self._MhG = sp.lambdify(args, _Opaque([Mx, hx, Gx]), modules="numpy", cse=_fast_cse)
+        self._TV = sp.lambdify(args, _Opaque([T, V]), modules="numpy", cse=_fast_cse)
         timings["lambdify"] = time.perf_counter() - t2
         timings["total"] = time.perf_counter() - t0
         self.timings = timings
@@ -209,44 +303,48 @@ class CableReference:
             raise ValueError("q and qd must have length %d" % (3 * n))
         return vals + q + qd
 
+    def evaluate(self, params, q, qd):
+        """(M, h, G) at one state: M (3n x 3n), h (3n), G (3n) as numpy arrays."""
+        N = 3 * self.n
+        Mv, hv, Gv = self._MhG(*self._args(params, q, qd))
+        return (np.asarray(Mv, dtype=float).reshape(N, N),
+                np.asarray(hv, dtype=float).reshape(N),
+                np.asarray(Gv, dtype=float).reshape(N))
+
     def M(self, params, q, qd=None):
         """Mass matrix (3n x 3n); independent of qd (which may be omitted)."""
-        if qd is None:
-            qd = np.zeros(3 * self.n)
-        return np.asarray(self._M(*self._args(params, q, qd)), dtype=float).reshape(3 * self.n, 3 * self.n)
+        return self.evaluate(params, q, np.zeros(3 * self.n) if qd is None else qd)[0]
 
     def h(self, params, q, qd):
         """Coriolis/centrifugal vector (3n)."""
-        return np.asarray(self._h(*self._args(params, q, qd)), dtype=float).reshape(3 * self.n)
+        return self.evaluate(params, q, qd)[1]
 
     def G(self, params, q, qd=None):
         """Gravity-minus-buoyancy generalized force dV/dq (3n)."""
-        if qd is None:
-            qd = np.zeros(3 * self.n)
-        return np.asarray(self._G(*self._args(params, q, qd)), dtype=float).reshape(3 * self.n)
+        return self.evaluate(params, q, np.zeros(3 * self.n) if qd is None else qd)[2]
 
     def T(self, params, q, qd):
         """Kinetic energy."""
-        return float(self._T(*self._args(params, q, qd)))
+        return float(self._TV(*self._args(params, q, qd))[0])
 
     def V(self, params, q, qd=None):
-        """Potential energy."""
-        if qd is None:
-            qd = np.zeros(3 * self.n)
-        return float(self._V(*self._args(params, q, qd)))
+        """Potential energy (independent of qd)."""
+        qd = np.zeros(3 * self.n) if qd is None else qd
+        return float(self._TV(*self._args(params, q, qd))[1])
 
     def accel(self, params, q, qd, tau=None):
         """q'' from M q'' + h + G = tau (tau = 0 by default)."""
-        rhs = -self.h(params, q, qd) - self.G(params, q)
+        Mv, hv, Gv = self.evaluate(params, q, qd)
+        rhs = -hv - Gv
         if tau is not None:
             rhs = rhs + np.asarray(tau, dtype=float)
-        return np.linalg.solve(self.M(params, q), rhs)
+        return np.linalg.solve(Mv, rhs)
 
 
 @functools.lru_cache(maxsize=None)
-def build(n):
-    """Derive (once per n, cached) the reference model of an n-link cable."""
-    return CableReference(int(n))
+def build(n, method="dag"):
+    """Derive (once per n and method, cached) the reference model of an n-link cable."""
+    return CableReference(int(n), method)
 
 
 def params_from_json(data):
@@ -324,44 +422,94 @@ def energy_drift(ref, params, q0, qd0, dt=1e-3, steps=2000):
     return worst
 
 
+def single_link_closed_form(params, q, qd):
+    """Hand-derived (M, h, G) of ONE link, used only to check the symbolic derivation.
+
+    For n = 1 the energies reduce to
+        T = 1/2 A (te'^2 + sin^2 te a'^2) + 1/2 I_P (t' + cos te a')^2,
+        A = m l^2/4 + I_T + m_load l^2,
+        V = -g (ms l/2 + ms_load l) cos te,
+    from which (c = cos te, s = sin te)
+        M = [[A, 0, 0], [0, A s^2 + I_P c^2, I_P c], [0, I_P c, I_P]],
+        h = [-(A - I_P) s c a'^2 + I_P s a' t',
+             2 (A - I_P) s c te' a' - I_P s te' t',
+             -I_P s te' a'],
+        G = [g (ms l/2 + ms_load l) s, 0, 0].
+    """
+    m, ln = params["mass"][0], params["length"][0]
+    it, ip = params["inertia_transverse"][0], params["inertia_polar"][0]
+    ms, g = params["submerged_mass"][0], params["gravity"]
+    big_a = m * ln**2 / 4 + it + params["load_mass"] * ln**2
+    te, ted, ad, td = q[0], qd[0], qd[1], qd[2]
+    c, s = np.cos(te), np.sin(te)
+    M = np.array([[big_a, 0.0, 0.0],
+                  [0.0, big_a * s**2 + ip * c**2, ip * c],
+                  [0.0, ip * c, ip]])
+    h = np.array([-(big_a - ip) * s * c * ad**2 + ip * s * ad * td,
+                  2 * (big_a - ip) * s * c * ted * ad - ip * s * ted * td,
+                  -ip * s * ted * ad])
+    G = np.array([g * (ms * ln / 2 + params["load_submerged_mass"] * ln) * s, 0.0, 0.0])
+    return M, h, G
+
+
+def _rel_err(a, b):
+    return float(np.max(np.abs(np.asarray(a) - np.asarray(b))) / max(1e-300, np.max(np.abs(b))))
+
+
 def _main():
-    # n = 1 closed form (pendulum with axisymmetric inertia, no load, in air).
+    print("sympy %s, numpy %s" % (sp.__version__, np.__version__))
+    # n = 1 against the hand-derived single link (no load, in air, then with load and buoyancy).
     ref1 = build(1)
+    print("n=1: build %.2f s" % ref1.timings["total"])
     m_, l_, it_, ip_, g_ = 1.7, 1.3, 0.31, 0.02, 9.81
     p1 = {"mass": [m_], "length": [l_], "inertia_transverse": [it_], "inertia_polar": [ip_],
           "submerged_mass": [m_], "load_mass": 0.0, "load_submerged_mass": 0.0, "gravity": g_}
-    q1 = [0.7, 0.4, -1.1]
-    M1 = ref1.M(p1, q1)
-    G1 = ref1.G(p1, q1)
-    print("n=1: M[0,0] = %.15g (expected %.15g)" % (M1[0, 0], m_ * l_**2 / 4 + it_))
-    print("n=1: G[0]   = %.15g (expected %.15g)" % (G1[0], g_ * m_ * l_ / 2 * np.sin(q1[0])))
+    q1, qd1 = [0.7, 0.4, -1.1], [0.3, -1.2, 0.8]
+    M1, h1, G1 = ref1.evaluate(p1, q1, qd1)
+    print("   M[0,0] = %.15g (m l^2/4 + I_T = %.15g)" % (M1[0, 0], m_ * l_**2 / 4 + it_))
+    print("   G[0]   = %.15g (g m l/2 sin te = %.15g)" % (G1[0], g_ * m_ * l_ / 2 * np.sin(q1[0])))
+    p1w = dict(p1, submerged_mass=[0.4 * m_], load_mass=3.0, load_submerged_mass=2.1)
+    for label, pp in (("no load, air", p1), ("load, water", p1w)):
+        want = single_link_closed_form(pp, q1, qd1)
+        got = ref1.evaluate(pp, q1, qd1)
+        print("   closed form (%s): rel err M %.1e  h %.1e  G %.1e"
+              % ((label,) + tuple(_rel_err(a, b) for a, b in zip(got, want))))
+
+    # The memoized derivation against plain sympy.diff (n = 2).
+    ref2s = build(2, "sympy")
+    print("n=2 with plain sympy.diff: build %.2f s (derivatives %.2f)"
+          % (ref2s.timings["total"], ref2s.timings["derivatives"]))
+    rs = np.random.RandomState(7)
+    params = example_params(2, seed=7)
+    worst = [0.0, 0.0, 0.0]
+    for _ in range(5):
+        q, qd = random_state(2, rs)
+        for i, (a, b) in enumerate(zip(build(2).evaluate(params, q, qd), ref2s.evaluate(params, q, qd))):
+            worst[i] = max(worst[i], _rel_err(a, b))
+    print("   dag vs sympy.diff: rel err M %.1e  h %.1e  G %.1e" % tuple(worst))
 
     for n in (2, 3, 4):
-        t0 = time.perf_counter()
         ref = build(n)
-        wall = time.perf_counter() - t0
         tm = ref.timings
         print("n=%d: build %.2f s (energies %.2f, derivatives %.2f, lambdify %.2f)"
-              % (n, wall, tm["energies"], tm["derivatives"], tm["lambdify"]))
+              % (n, tm["total"], tm["energies"], tm["derivatives"], tm["lambdify"]))
         rs = np.random.RandomState(100 + n)
         params = example_params(n, seed=n)
         q, qd = random_state(n, rs)
         t1 = time.perf_counter()
-        Mn = ref.M(params, q)
-        hn = ref.h(params, q, qd)
-        Gn = ref.G(params, q)
+        Mn, hn, Gn = ref.evaluate(params, q, qd)
         t_eval = time.perf_counter() - t1
         Tn = ref.T(params, q, qd)
         axis_res, skew_res = _numeric_kinematics_checks(ref, params, q, qd)
         eig = np.linalg.eigvalsh(Mn)
         print("   eval M,h,G %.2f ms; |R e_z - u| %.1e; |W + W^T| %.1e; |T - qd'Mqd/2| %.1e; "
-              "min eig(M) %.3e; |h|max %.3e; |G|max %.3e"
-              % (1e3 * t_eval, axis_res, skew_res, abs(Tn - qd @ Mn @ qd / 2), eig[0],
-                 np.max(np.abs(hn)), np.max(np.abs(Gn))))
-        if n <= 3:
-            t2 = time.perf_counter()
-            drift = energy_drift(ref, params, q, qd, dt=1e-3, steps=500)
-            print("   energy drift over 0.5 s RK4 (dt 1 ms): %.2e (%.1f s)" % (drift, time.perf_counter() - t2))
+              "|M - M^T| %.1e; min eig(M) %.3e; |h|max %.3e; |G|max %.3e"
+              % (1e3 * t_eval, axis_res, skew_res, abs(Tn - qd @ Mn @ qd / 2),
+                 np.max(np.abs(Mn - Mn.T)), eig[0], np.max(np.abs(hn)), np.max(np.abs(Gn))))
+        t2 = time.perf_counter()
+        drift = energy_drift(ref, params, q, qd, dt=1e-3, steps=500)
+        print("   energy drift of M q'' + h + G = 0 over 0.5 s RK4 (dt 1 ms): %.2e (%.1f s)"
+              % (drift, time.perf_counter() - t2))
 
 
 if __name__ == "__main__":

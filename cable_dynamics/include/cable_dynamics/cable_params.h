@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/StdVector>
 
 namespace cable_dynamics {
 
@@ -42,13 +43,30 @@ struct DampingParams {
   double torsion = 0.0;
 };
 
+/// A prescribed motion: offset + amplitude sin(2 pi t / period) + velocity t, world frame (z up).
+struct MotionParams {
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();     ///< [m]
+  Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  ///< [m]
+  double period = 10.0;                                 ///< [s]
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();   ///< [m/s]
+};
+
 /// The terminal load (ROV, clump weight or nothing).
 struct LoadParams {
   double mass = 0.0;    ///< [kg], 0 = bare cable
   double volume = 0.0;  ///< displaced volume [m^3], gives buoyancy
   LoadMode mode = LoadMode::kFree;
-  double drag_area = 0.0;         ///< frontal area times drag coefficient, C_d A [m^2]
-  double added_mass = 0.0;        ///< added mass of the load [kg]
+  double drag_area = 0.0;            ///< frontal area times drag coefficient, C_d A [m^2]
+  double added_mass = 0.0;           ///< added mass of the load [kg]
+  double coupling_stiffness = 2.0e4; ///< PD coupling to the anchor / ROV [N/m]
+  double coupling_damping = 2.0e3;   ///< [N s/m]
+  /// Anchor / ROV target relative to the load's initial position (modes anchored, attached).
+  MotionParams motion;
+};
+
+/// The cable's base (vessel, cage or fixed point).
+struct BaseParams {
+  MotionParams motion;  ///< prescribed motion of the base relative to its initial position
 };
 
 /// The surrounding fluid.
@@ -58,6 +76,10 @@ struct FluidParams {
   double drag_tangential = 0.01;    ///< skin-friction drag coefficient along a link [-]
   double added_mass = 1.0;          ///< added-mass coefficient normal to a link [-]
   Eigen::Vector3d current = Eigen::Vector3d::Zero();  ///< uniform current, world frame (z up) [m/s]
+  /// Optional depth profile: rows (depth below the base [m], current x, y, z world frame [m/s]), depth
+  /// increasing; linear in between, constant beyond the ends. Replaces `current` when given.
+  std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>> current_profile;
+  int drag_points = 3;  ///< Gauss-Legendre points per link for the distributed drag
 };
 
 /// Initial state in the paper's coordinates, one value per joint [rad].
@@ -82,6 +104,7 @@ struct CableParams {
   StiffnessParams stiffness;
   DampingParams damping;
   LoadParams load;
+  BaseParams base;
   FluidParams fluid;
   double gravity = 9.81;                  ///< [m/s^2]
   InitialState initial;

@@ -1,0 +1,142 @@
+#pragma once
+/// \file
+/// \brief The cable's equations of motion in coordinates without the zero-elevation singularity.
+///
+/// Same physical model as PaperModel (n axisymmetric rigid links on ball joints, point load at the
+/// tip), plus the fluid, the springs and the end conditions. Each link's state is its unit axis u_k,
+/// its total twist about the vertical sigma_k = psi_k + phi_k (the one combination of the paper's
+/// angles that stays defined when the link hangs straight down) and its angular velocity omega_k
+/// (world/paper frame). The accelerations come from the virtual-power balance of everything outboard
+/// of each joint; see docs/MODEL.md section 6. Frame: the paper's, z down, origin at the base's rest
+/// position.
+
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/StdVector>
+
+#include "cable_dynamics/cable_params.h"
+#include "cable_dynamics/fluid.h"
+
+namespace cable_dynamics {
+
+using Matrix3dVector = std::vector<Eigen::Matrix3d, Eigen::aligned_allocator<Eigen::Matrix3d>>;
+
+/// Layout of the flat state vector x (size 7n + 2).
+struct StateLayout {
+  static constexpr int kPerLink = 7;  ///< u (3), sigma (1), omega (3)
+  static int axis(int k) { return kPerLink * k; }
+  static int twist(int k) { return kPerLink * k + 3; }
+  static int omega(int k) { return kPerLink * k + 4; }
+  static int dissipated(int n) { return kPerLink * n; }  ///< energy taken out by drag, added mass, dampers [J]
+  static int workInput(int n) { return kPerLink * n + 1; }  ///< work done by the moving ends [J]
+  static int size(int n) { return kPerLink * n + 2; }
+};
+
+/// What drives the ends during a step (paper frame).
+struct EndInputs {
+  Eigen::Vector3d base_position = Eigen::Vector3d::Zero();      ///< [m]
+  Eigen::Vector3d base_velocity = Eigen::Vector3d::Zero();      ///< [m/s]
+  Eigen::Vector3d base_acceleration = Eigen::Vector3d::Zero();  ///< [m/s^2]
+  bool load_coupled = false;                                    ///< PD coupling of the tip to a target
+  Eigen::Vector3d target_position = Eigen::Vector3d::Zero();    ///< [m]
+  Eigen::Vector3d target_velocity = Eigen::Vector3d::Zero();    ///< [m/s]
+};
+
+/// Everything derived from one state: accelerations, forces along the cable, energies.
+struct ChainOutputs {
+  Eigen::VectorXd omega_rate;    ///< (3n) angular accelerations [rad/s^2]
+  Eigen::Matrix3Xd ends;         ///< (3 x n+1) base and link far ends [m]
+  Eigen::Matrix3Xd joint_force;  ///< (3 x n) force on the outboard part at joint k's base end [N]
+  Eigen::VectorXd tension;       ///< (n) force along link k at its base end, + pulls towards the base [N]
+  Eigen::Vector3d load_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the load [N]
+  Eigen::Vector3d base_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the base [N]
+  Eigen::Vector3d coupling_force = Eigen::Vector3d::Zero();  ///< PD force of the anchor / ROV on the load [N]
+  double kinetic_energy = 0.0;    ///< cable and load, without the fluid's added mass [J]
+  double potential_energy = 0.0;  ///< gravity minus buoyancy, zero at the base's rest height [J]
+  double elastic_energy = 0.0;    ///< joint springs [J]
+};
+
+/// Equations of motion x' = f(t, x). The hot path is derivative(): it assembles the 3n x 3n mass matrix
+/// of the angular velocities in O(n^2) and solves it by Cholesky, O(n^3); it performs no heap allocation.
+class ChainDynamics {
+ public:
+  explicit ChainDynamics(const CableParams& params);
+
+  int links() const { return n_; }
+  int stateSize() const { return StateLayout::size(n_); }
+  const LinkProperties& properties() const { return props_; }
+  CurrentField& current() { return current_; }
+
+  /// Sets the paper azimuths (n) [rad] near which the paper springs read psi_k (kept continuous
+  /// by the simulator between steps; only the paper stiffness model uses them).
+  void setAzimuthReference(const Eigen::VectorXd& psi) { psi_reference_ = psi; }
+
+  /// x' at state x (size stateSize()). Returns false when the state is not finite or the mass matrix
+  /// is not positive definite; xdot is then unspecified.
+  bool derivative(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& xdot);
+
+  /// Accelerations, forces along the cable and energies at x. Returns false like derivative().
+  bool evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out);
+
+  /// Paper coordinates (3n) and rates (3n) of state x; psi continues from the azimuth reference.
+  void paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& q, Eigen::VectorXd& qd) const;
+
+  /// State from paper coordinates: axes, twists, angular velocities (base at rest, energies zero).
+  void stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const;
+
+  /// World-frame torque on each link from the joint springs and dampers (3 x n) [N m] at x
+  /// (base at rest).
+  void jointTorques(const Eigen::VectorXd& x, Eigen::Matrix3Xd& torque);
+
+ private:
+  bool solve(const Eigen::VectorXd& x, const EndInputs& ends);
+  void kinematics(const Eigen::VectorXd& x, const EndInputs& ends);
+  void externalForces(const EndInputs& ends);
+  void assemble();
+  void jointForces();
+  void computeJointTorques(const Eigen::VectorXd& x);
+  void paperSpringTorques(const Eigen::VectorXd& x);
+  void bendingSpringTorques(const Eigen::VectorXd& x);
+  double elasticEnergy(const Eigen::VectorXd& x) const;
+
+  int n_;
+  LinkProperties props_;
+  StiffnessModel stiffness_model_;
+  CurrentField current_;
+  double density_, diameter_, drag_normal_, drag_tangential_;
+  double load_drag_area_, load_coupling_stiffness_, load_coupling_damping_;
+  int drag_points_;
+  double gauss_nodes_[8], gauss_weights_[8];
+
+  // Per link constants.
+  Eigen::VectorXd mass_per_length_;      ///< [kg/m]
+  Eigen::VectorXd added_per_length_;     ///< normal added mass [kg/m]
+  Eigen::VectorXd weight_;               ///< submerged weight ms g [N]
+  Eigen::VectorXd thick_transverse_;     ///< thickness part of I_T, m r^2/4 [kg m^2]
+  double load_inertia_;                  ///< load mass plus its added mass [kg]
+  double load_weight_;                   ///< [N]
+  Eigen::VectorXd psi_reference_;
+
+  // Workspace (sized once).
+  Eigen::Matrix3Xd u_, omega_, base_pos_, base_vel_, known_acc_, beta_;
+  Eigen::Matrix3Xd force_, moment_, drag_force_, drag_moment_, inertial_force_, inertial_moment_;
+  Eigen::Matrix3Xd torque_, axis_acc_;
+  Matrix3dVector tensor_;                ///< A_k = m' I + m_a' (I - u u^T) per length [kg/m]
+  Matrix3dVector outboard_;              ///< B_k = sum_{j>k} l_j A_j + load [kg]
+  Matrix3dVector column_;                ///< E_j [u_j]x, shared by column j of M
+  Eigen::Vector3d tip_pos_, tip_vel_, tip_known_acc_, load_external_, coupling_;
+  Eigen::MatrixXd mass_matrix_;
+  Eigen::VectorXd rhs_;
+  Eigen::LLT<Eigen::MatrixXd> llt_;
+  Eigen::Matrix3Xd joint_force_;
+  Eigen::Vector3d load_force_;
+  double drag_power_ = 0.0, added_mass_power_ = 0.0, input_power_ = 0.0;
+  Eigen::Matrix3Xd spring_torque_, damping_torque_;  ///< (3 x n) [N m]; torque_ is their sum
+  Eigen::Matrix3Xd paper_coords_, paper_rates_;      ///< (3 x n) paper springs' (te, a, t) and rates
+  Eigen::VectorXd paper_psi_;                        ///< (n) absolute azimuths [rad]
+  Eigen::Matrix3Xd link_base_acc_;                   ///< (3 x n) acceleration of each link's base end [m/s^2]
+};
+
+}  // namespace cable_dynamics

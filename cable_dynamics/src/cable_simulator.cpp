@@ -1,0 +1,191 @@
+#include "cable_dynamics/cable_simulator.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "cable_dynamics/frames.h"
+#include "cable_dynamics/states.h"
+
+namespace cable_dynamics {
+namespace {
+
+/// Position, velocity and acceleration of a prescribed motion at time t, converted to the paper frame.
+void motionAt(const MotionParams& m, double t, Eigen::Vector3d& p, Eigen::Vector3d& v, Eigen::Vector3d& a) {
+  const double w = 2.0 * M_PI / m.period;
+  p = worldToPaper(m.offset + m.amplitude * std::sin(w * t) + m.velocity * t);
+  v = worldToPaper(m.amplitude * (w * std::cos(w * t)) + m.velocity);
+  a = worldToPaper(m.amplitude * (-w * w * std::sin(w * t)));
+}
+
+}  // namespace
+
+CableSimulator::CableSimulator(const CableParams& params)
+    : params_(params), dynamics_(params), dt_(params.simulation.dt) {
+  const int size = dynamics_.stateSize();
+  for (Eigen::VectorXd* v : {&x_, &x_start_, &k1_, &k2_, &k3_, &k4_, &stage_}) v->setZero(size);
+  q_.setZero(3 * params.links);
+  qd_.setZero(3 * params.links);
+  // A step that spins a link faster than this has diverged: 1000 x the swing rate of the shortest link
+  // as a pendulum (and at least 1000 rad/s).
+  const double shortest = dynamics_.properties().length.minCoeff();
+  omega_limit_ = std::max(1000.0, 1000.0 * std::sqrt(std::max(params.gravity, 1.0) / shortest));
+  reset();
+}
+
+void CableSimulator::reset() {
+  Eigen::VectorXd q, qd;
+  initialState(params_, q, qd);
+  external_load_ = false;
+  external_base_ = false;
+  dynamics_.current() = CurrentField(params_.fluid);
+  setPaperState(q, qd);
+}
+
+void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+  const int dof = 3 * links();
+  if (q.size() != dof || qd.size() != dof) {
+    throw std::invalid_argument("state has " + std::to_string(q.size()) + " positions and " +
+                                std::to_string(qd.size()) + " velocities: expected 3n = " + std::to_string(dof));
+  }
+  if (!q.allFinite() || !qd.allFinite()) throw std::invalid_argument("state has a non-finite value");
+  dynamics_.stateFromPaper(q, qd, x_);
+  // Continue azimuths from the given angles (straight-down links keep the azimuth they were given).
+  Eigen::VectorXd psi(links());
+  double sum = 0.0;
+  for (int k = 0; k < links(); ++k) psi(k) = (sum += q(3 * k + 1));
+  dynamics_.setAzimuthReference(psi);
+  time_ = 0.0;
+  Eigen::Vector3d position, velocity, acceleration;
+  motionAt(params_.base.motion, 0.0, position, velocity, acceleration);
+  Eigen::Vector3d tip = position;
+  for (int k = 0; k < links(); ++k) tip += dynamics_.properties().length(k) * x_.segment<3>(StateLayout::axis(k));
+  initial_tip_ = tip;
+}
+
+EndInputs CableSimulator::endsAt(double t) const {
+  EndInputs ends;
+  if (external_base_) {
+    ends.base_position = base_target_pos_;
+    ends.base_velocity = base_target_vel_;
+  } else {
+    motionAt(params_.base.motion, t, ends.base_position, ends.base_velocity, ends.base_acceleration);
+  }
+  ends.load_coupled = params_.load.mode != LoadMode::kFree;
+  if (external_load_) {
+    ends.target_position = load_target_pos_;
+    ends.target_velocity = load_target_vel_;
+  } else if (ends.load_coupled) {
+    Eigen::Vector3d a;
+    motionAt(params_.load.motion, t, ends.target_position, ends.target_velocity, a);
+    ends.target_position += initial_tip_;
+    if (params_.load.mode == LoadMode::kAnchored) ends.target_velocity.setZero();
+  }
+  return ends;
+}
+
+bool CableSimulator::advance(double h) {
+  // Classical RK4 on x' = f(t, x).
+  ChainDynamics& f = dynamics_;
+  const double t = time_;
+  if (!f.derivative(x_, endsAt(t), k1_)) return false;
+  stage_ = x_ + 0.5 * h * k1_;
+  if (!f.derivative(stage_, endsAt(t + 0.5 * h), k2_)) return false;
+  stage_ = x_ + 0.5 * h * k2_;
+  if (!f.derivative(stage_, endsAt(t + 0.5 * h), k3_)) return false;
+  stage_ = x_ + h * k3_;
+  if (!f.derivative(stage_, endsAt(t + h), k4_)) return false;
+  x_ += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+  time_ = t + h;
+  const int n = links();
+  for (int k = 0; k < n; ++k) {
+    Eigen::Ref<Eigen::VectorXd> axis = x_.segment(StateLayout::axis(k), 3);
+    const double norm = axis.norm();
+    if (!std::isfinite(norm) || norm < 0.5) return false;
+    axis /= norm;  // back onto the unit sphere
+    if (!(x_.segment<3>(StateLayout::omega(k)).norm() < omega_limit_)) return false;
+  }
+  return x_.allFinite();
+}
+
+StepReport CableSimulator::step() {
+  StepReport report;
+  x_start_ = x_;
+  const double t0 = time_;
+  for (int pieces = 1; pieces <= 64; pieces *= 2) {
+    bool ok = true;
+    for (int i = 0; i < pieces && ok; ++i) ok = advance(dt_ / pieces);
+    if (ok) {
+      report.substeps = pieces;
+      time_ = t0 + dt_;  // no drift from summing the pieces
+      dynamics_.paperCoordinates(x_, q_, qd_);
+      Eigen::VectorXd& psi = k4_;  // scratch: absolute azimuths from the relative ones
+      double sum = 0.0;
+      for (int k = 0; k < links(); ++k) psi(k) = (sum += q_(3 * k + 1));
+      dynamics_.setAzimuthReference(psi.head(links()));
+      return report;
+    }
+    x_ = x_start_;
+    time_ = t0;
+  }
+  dynamics_.paperCoordinates(x_, q_, qd_);
+  std::ostringstream message;
+  message.precision(6);
+  message << "step from t = " << t0 << " s diverged even in 64 substeps (dt = " << dt_
+          << " s); state kept at t = " << t0 << " s: q = [" << q_.transpose() << "], qd = [" << qd_.transpose() << "]";
+  report.ok = false;
+  report.substeps = 64;
+  report.message = message.str();
+  return report;
+}
+
+void CableSimulator::snapshot(SimulationSnapshot& out) {
+  out.time = time_;
+  out.q.resize(3 * links());
+  out.qd.resize(3 * links());
+  dynamics_.paperCoordinates(x_, out.q, out.qd);
+  if (!dynamics_.evaluate(x_, endsAt(time_), out.chain)) {
+    throw std::runtime_error("snapshot: the state at t = " + std::to_string(time_) + " s is not valid");
+  }
+  out.dissipated_energy = x_(StateLayout::dissipated(links()));
+  out.work_input = x_(StateLayout::workInput(links()));
+  out.total_energy = out.chain.kinetic_energy + out.chain.potential_energy + out.chain.elastic_energy +
+                     out.dissipated_energy - out.work_input;
+}
+
+void CableSimulator::setCurrentWorld(const Eigen::Vector3d& current) { dynamics_.current().setUniformWorld(current); }
+
+void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
+  external_load_ = true;
+  load_target_pos_ = position;
+  load_target_vel_ = velocity;
+}
+
+void CableSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
+  external_base_ = true;
+  base_target_pos_ = position;
+  base_target_vel_ = velocity;
+}
+
+double CableSimulator::estimateStableTimeStep() const {
+  const LinkProperties& p = dynamics_.properties();
+  const int n = p.n;
+  const double radius = 0.5 * params_.diameter;
+  const double added = params_.fluid.added_mass * params_.fluid.density * M_PI * radius * radius;  // [kg/m]
+  // Hanging tension at the top: submerged weight of everything below, or the load's alone if larger.
+  const double tension = std::abs(p.gravity * (p.submerged_mass.sum() + p.load_submerged_mass)) +
+                         params_.load.coupling_stiffness * (params_.load.mode == LoadMode::kFree ? 0.0 : p.length.maxCoeff());
+  double omega_max = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double l = p.length(k), m = p.mass(k) + added * l;
+    // Highest mode of a beaded string: 2 sqrt(T / (m l)) for links of mass m and length l.
+    omega_max = std::max(omega_max, 2.0 * std::sqrt(tension / (m * l)));
+    const double k_bend = std::max(p.stiffness_elevation(k), p.stiffness_azimuth(k));
+    omega_max = std::max(omega_max, std::sqrt(4.0 * k_bend / (p.mass(k) * l * l / 12.0)));
+    omega_max = std::max(omega_max, std::sqrt(4.0 * p.stiffness_torsion(k) / p.inertia_polar(k)));
+  }
+  // RK4 is stable for dt * omega < 2.8 on oscillatory modes; keep a factor 2 of margin.
+  return omega_max > 0.0 ? 1.4 / omega_max : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace cable_dynamics

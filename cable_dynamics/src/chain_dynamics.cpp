@@ -1,0 +1,449 @@
+#include "cable_dynamics/chain_dynamics.h"
+
+#include <cassert>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "cable_dynamics/paper_model.h"
+
+namespace cable_dynamics {
+namespace {
+
+const Eigen::Vector3d kDown = Eigen::Vector3d::UnitZ();
+
+/// Below this sin(te) a link counts as hanging straight down: its azimuth is not defined there.
+constexpr double kVerticalSine = 1e-9;
+
+inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return s;
+}
+
+/// beta / sin(beta) for the bend angle beta, with its series where sin(beta) -> 0.
+inline double angleOverSine(double beta, double sine) {
+  return beta < 1e-4 ? 1.0 + beta * beta / 6.0 : beta / sine;
+}
+
+inline double wrapToPi(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+/// Unit vectors of the paper's Euler angles for a link at elevation te and azimuth psi:
+/// n = (cos psi, -sin psi, 0) (the elevation axis, up to sign), e = du/dte.
+inline void eulerAxes(double te, double psi, Eigen::Vector3d& n, Eigen::Vector3d& e) {
+  n << std::cos(psi), -std::sin(psi), 0.0;
+  e << std::cos(te) * std::sin(psi), std::cos(te) * std::cos(psi), -std::sin(te);
+}
+
+}  // namespace
+
+ChainDynamics::ChainDynamics(const CableParams& params)
+    : n_(params.links),
+      props_(deriveLinkProperties(params)),
+      stiffness_model_(params.stiffness.model),
+      current_(params.fluid),
+      density_(params.fluid.density),
+      diameter_(params.diameter),
+      drag_normal_(params.fluid.drag_normal),
+      drag_tangential_(params.fluid.drag_tangential),
+      load_drag_area_(params.load.drag_area),
+      load_coupling_stiffness_(params.load.coupling_stiffness),
+      load_coupling_damping_(params.load.coupling_damping),
+      drag_points_(params.fluid.drag_points) {
+  const int n = n_;
+  gaussLegendreUnit(drag_points_, gauss_nodes_, gauss_weights_);
+  const double radius = 0.5 * diameter_;
+  mass_per_length_ = props_.mass.cwiseQuotient(props_.length);
+  added_per_length_ = Eigen::VectorXd::Constant(n, params.fluid.added_mass * density_ * M_PI * radius * radius);
+  weight_ = props_.gravity * props_.submerged_mass;
+  // The translation integral over each link already holds m l^2/12; the rest of I_T is the thickness.
+  thick_transverse_ = props_.mass * (radius * radius / 4.0);
+  load_inertia_ = props_.load_mass + params.load.added_mass;
+  load_weight_ = props_.gravity * props_.load_submerged_mass;
+  psi_reference_ = Eigen::VectorXd::Zero(n);
+  paper_psi_ = Eigen::VectorXd::Zero(n);
+
+  for (Eigen::Matrix3Xd* m : {&u_, &omega_, &base_pos_, &base_vel_, &known_acc_, &beta_, &force_, &moment_,
+                              &drag_force_, &drag_moment_, &inertial_force_, &inertial_moment_, &torque_,
+                              &axis_acc_, &joint_force_, &damping_torque_, &spring_torque_, &paper_coords_,
+                              &paper_rates_, &link_base_acc_}) {
+    m->setZero(3, n);
+  }
+  tensor_.assign(n, Eigen::Matrix3d::Zero());
+  outboard_.assign(n, Eigen::Matrix3d::Zero());
+  column_.assign(n, Eigen::Matrix3d::Zero());
+  mass_matrix_.setZero(3 * n, 3 * n);
+  rhs_.setZero(3 * n);
+  llt_ = Eigen::LLT<Eigen::MatrixXd>(3 * n);
+}
+
+void ChainDynamics::kinematics(const Eigen::VectorXd& x, const EndInputs& ends) {
+  Eigen::Vector3d pos = ends.base_position, vel = ends.base_velocity, acc = ends.base_acceleration;
+  for (int k = 0; k < n_; ++k) {
+    // Links are unit vectors up to the integrator's drift: use the normalized axis.
+    u_.col(k) = x.segment<3>(StateLayout::axis(k)).normalized();
+    omega_.col(k) = x.segment<3>(StateLayout::omega(k));
+    base_pos_.col(k) = pos;
+    base_vel_.col(k) = vel;
+    known_acc_.col(k) = acc;
+    const Eigen::Vector3d axis_rate = omega_.col(k).cross(u_.col(k));
+    beta_.col(k) = omega_.col(k).cross(axis_rate);  // centripetal part of u''
+    const double l = props_.length(k);
+    pos += l * u_.col(k);
+    vel += l * axis_rate;
+    acc += l * beta_.col(k);
+  }
+  tip_pos_ = pos;
+  tip_vel_ = vel;
+  tip_known_acc_ = acc;
+}
+
+void ChainDynamics::externalForces(const EndInputs& ends) {
+  drag_power_ = 0.0;
+  for (int k = 0; k < n_; ++k) {
+    const double l = props_.length(k);
+    const Eigen::Vector3d axis = u_.col(k), axis_rate = omega_.col(k).cross(axis);
+    // Submerged weight, uniform along the link: total and first moment about the base end.
+    Eigen::Vector3d f = weight_(k) * kDown, m = 0.5 * l * weight_(k) * kDown;
+    Eigen::Vector3d fd = Eigen::Vector3d::Zero(), md = Eigen::Vector3d::Zero();
+    if (density_ > 0.0) {
+      // Drag, distributed along the link: Gauss-Legendre over the arc length s in [0, l].
+      for (int i = 0; i < drag_points_; ++i) {
+        const double s = gauss_nodes_[i] * l, w = gauss_weights_[i] * l;
+        const Eigen::Vector3d point = base_pos_.col(k) + s * axis;
+        const Eigen::Vector3d velocity = base_vel_.col(k) + s * axis_rate;
+        const Eigen::Vector3d drag = morisonDragPerLength(axis, velocity, current_.at(point.z()), density_,
+                                                          diameter_, drag_normal_, drag_tangential_);
+        fd += w * drag;
+        md += w * s * drag;
+      }
+    }
+    drag_force_.col(k) = fd;
+    drag_moment_.col(k) = md;
+    force_.col(k) = f + fd;
+    moment_.col(k) = m + md;
+    drag_power_ += fd.dot(base_vel_.col(k)) + md.dot(axis_rate);
+  }
+  // The load: weight, drag, and the PD coupling to its anchor or to the ROV.
+  load_external_ = load_weight_ * kDown;
+  if (density_ > 0.0 && load_drag_area_ > 0.0) {
+    const Eigen::Vector3d relative = current_.at(tip_pos_.z()) - tip_vel_;
+    const Eigen::Vector3d drag = 0.5 * density_ * load_drag_area_ * relative.norm() * relative;
+    load_external_ += drag;
+    drag_power_ += drag.dot(tip_vel_);
+  }
+  coupling_.setZero();
+  if (ends.load_coupled) {
+    coupling_ = -load_coupling_stiffness_ * (tip_pos_ - ends.target_position) -
+                load_coupling_damping_ * (tip_vel_ - ends.target_velocity);
+    load_external_ += coupling_;
+  }
+}
+
+void ChainDynamics::assemble() {
+  const int n = n_;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3d axis = u_.col(k);
+    tensor_[k] = mass_per_length_(k) * identity + added_per_length_(k) * (identity - axis * axis.transpose());
+  }
+  // Outboard inertia B_k = sum_{j>k} l_j A_j + load, and the known-acceleration (bias) integrals.
+  Eigen::Matrix3d outboard = load_inertia_ * identity;
+  Eigen::Vector3d outboard_force = load_external_ - load_inertia_ * tip_known_acc_;
+  for (int k = n - 1; k >= 0; --k) {
+    outboard_[k] = outboard;
+    const double l = props_.length(k);
+    const Eigen::Matrix3d& a = tensor_[k];
+    inertial_force_.col(k) = a * (l * known_acc_.col(k) + 0.5 * l * l * beta_.col(k));
+    inertial_moment_.col(k) = a * (0.5 * l * l * known_acc_.col(k) + (l * l * l / 3.0) * beta_.col(k));
+    // Generalized force of link k's angular velocity: moment about joint k of everything outboard of it.
+    const Eigen::Vector3d lever = l * outboard_force + moment_.col(k) - inertial_moment_.col(k);
+    const Eigen::Vector3d omega = omega_.col(k), axis = u_.col(k);
+    const double ip = props_.inertia_polar(k), it = thick_transverse_(k);
+    const Eigen::Vector3d spin_axis = axis * axis.dot(omega);
+    const Eigen::Vector3d angular_momentum = it * (omega - spin_axis) + ip * spin_axis;
+    rhs_.segment<3>(3 * k) = axis.cross(lever) + torque_.col(k) - omega.cross(angular_momentum);
+    outboard_force += force_.col(k) - inertial_force_.col(k);
+    outboard += l * a;
+  }
+  // M_rj = -l_r [u_r]x E_j [u_j]x for r < j with E_j = l_j (l_j/2 A_j + B_j); diagonal blocks use
+  // l_j^2 (l_j/3 A_j + B_j) plus the thickness inertia of the link.
+  for (int j = 0; j < n; ++j) {
+    const double l = props_.length(j);
+    const Eigen::Matrix3d uj = skew(u_.col(j));
+    column_[j] = (l * (0.5 * l * tensor_[j] + outboard_[j])) * uj;
+    const Eigen::Matrix3d diagonal = -uj * ((l * l) * ((l / 3.0) * tensor_[j] + outboard_[j])) * uj;
+    const Eigen::Vector3d axis = u_.col(j);
+    const Eigen::Matrix3d rotation_inertia =
+        thick_transverse_(j) * (identity - axis * axis.transpose()) + props_.inertia_polar(j) * axis * axis.transpose();
+    mass_matrix_.block<3, 3>(3 * j, 3 * j) = diagonal + rotation_inertia;
+    for (int r = 0; r < j; ++r) {
+      const Eigen::Matrix3d block = -props_.length(r) * skew(u_.col(r)) * column_[j];
+      mass_matrix_.block<3, 3>(3 * r, 3 * j) = block;
+      mass_matrix_.block<3, 3>(3 * j, 3 * r) = block.transpose();
+    }
+  }
+}
+
+void ChainDynamics::jointForces() {
+  // Accelerations of the link axes and base ends with the solved angular accelerations, then the force
+  // on everything outboard of each joint from Newton's law for that part: J_k = sum (A a - f).
+  Eigen::Vector3d acc = known_acc_.col(0);  // the base's own acceleration
+  Eigen::Matrix3Xd& link_base_acc = link_base_acc_;
+  for (int k = 0; k < n_; ++k) {
+    axis_acc_.col(k) = rhs_.segment<3>(3 * k).cross(u_.col(k)) + beta_.col(k);
+    link_base_acc.col(k) = acc;
+    acc += props_.length(k) * axis_acc_.col(k);
+  }
+  const Eigen::Vector3d tip_acc = acc;
+  load_force_ = load_inertia_ * tip_acc - load_external_;
+  Eigen::Vector3d outboard = load_force_;
+  added_mass_power_ = 0.0;
+  for (int k = n_ - 1; k >= 0; --k) {
+    const double l = props_.length(k);
+    const Eigen::Vector3d mean_acc = l * link_base_acc.col(k) + 0.5 * l * l * axis_acc_.col(k);
+    outboard += tensor_[k] * mean_acc - force_.col(k);
+    joint_force_.col(k) = outboard;
+    // Power of the added-mass force -m_a' P x'' against x' = v + s u' (both linear in s), integrated.
+    const Eigen::Vector3d axis = u_.col(k), axis_rate = omega_.col(k).cross(axis);
+    const Eigen::Matrix3d p = Eigen::Matrix3d::Identity() - axis * axis.transpose();
+    const Eigen::Vector3d a0 = p * link_base_acc.col(k), a1 = p * axis_acc_.col(k);
+    const Eigen::Vector3d v0 = base_vel_.col(k), v1 = axis_rate;
+    added_mass_power_ -= added_per_length_(k) * (l * a0.dot(v0) + 0.5 * l * l * (a0.dot(v1) + a1.dot(v0)) +
+                                                 (l * l * l / 3.0) * a1.dot(v1));
+  }
+}
+
+bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends) {
+  if (!x.allFinite()) return false;
+  kinematics(x, ends);
+  externalForces(ends);
+  computeJointTorques(x);
+  assemble();
+  llt_.compute(mass_matrix_);
+  if (llt_.info() != Eigen::Success) return false;
+  llt_.solveInPlace(rhs_);  // rhs_ now holds the angular accelerations
+  if (!rhs_.allFinite()) return false;
+  jointForces();
+  input_power_ = joint_force_.col(0).dot(ends.base_velocity) + coupling_.dot(tip_vel_);
+  return true;
+}
+
+bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& xdot) {
+  assert(x.size() == stateSize() && xdot.size() == stateSize());
+  if (!solve(x, ends)) return false;
+  for (int k = 0; k < n_; ++k) {
+    const Eigen::Vector3d axis = u_.col(k), omega = omega_.col(k);
+    xdot.segment<3>(StateLayout::axis(k)) = omega.cross(axis);
+    // sigma = psi + phi: from omega = -psi' e_z - te' n - phi' u, omega.(e_z + u) = -(psi' + phi')(1 + cos te).
+    const double denominator = 1.0 + axis.z();
+    xdot(StateLayout::twist(k)) = denominator > 1e-12 ? -omega.dot(kDown + axis) / denominator : -omega.dot(axis);
+    xdot.segment<3>(StateLayout::omega(k)) = rhs_.segment<3>(3 * k);
+  }
+  double damping_power = 0.0;
+  for (int k = 0; k < n_; ++k) damping_power += damping_torque_.col(k).dot(omega_.col(k));
+  xdot(StateLayout::dissipated(n_)) = -(drag_power_ + added_mass_power_ + damping_power);
+  xdot(StateLayout::workInput(n_)) = input_power_;
+  return true;
+}
+
+bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out) {
+  if (!solve(x, ends)) return false;
+  const int n = n_;
+  out.omega_rate = rhs_;
+  out.ends.resize(3, n + 1);
+  out.ends.leftCols(n) = base_pos_;
+  out.ends.col(n) = tip_pos_;
+  out.joint_force = joint_force_;
+  out.tension.resize(n);
+  for (int k = 0; k < n; ++k) out.tension(k) = -joint_force_.col(k).dot(u_.col(k));
+  out.load_force = load_force_;
+  out.base_force = -joint_force_.col(0);
+  out.coupling_force = coupling_;
+  // Energies: translation integrated along each link, rotation of the link's thickness, the load.
+  double kinetic = 0.5 * props_.load_mass * tip_vel_.squaredNorm();
+  double potential = -load_weight_ * tip_pos_.z();
+  for (int k = 0; k < n; ++k) {
+    const double l = props_.length(k), m = mass_per_length_(k);
+    const Eigen::Vector3d v = base_vel_.col(k), c = omega_.col(k).cross(u_.col(k));
+    kinetic += 0.5 * m * (l * v.squaredNorm() + l * l * v.dot(c) + (l * l * l / 3.0) * c.squaredNorm());
+    const Eigen::Vector3d omega = omega_.col(k), axis = u_.col(k);
+    const double spin = omega.dot(axis);
+    kinetic += 0.5 * thick_transverse_(k) * (omega.squaredNorm() - spin * spin) + 0.5 * props_.inertia_polar(k) * spin * spin;
+    potential -= weight_(k) * (base_pos_(2, k) + 0.5 * l * axis.z());
+  }
+  out.kinetic_energy = kinetic;
+  out.potential_energy = potential;
+  out.elastic_energy = elasticEnergy(x);
+  return true;
+}
+
+void ChainDynamics::jointTorques(const Eigen::VectorXd& x, Eigen::Matrix3Xd& torque) {
+  kinematics(x, EndInputs());
+  computeJointTorques(x);
+  torque = torque_;
+}
+
+void ChainDynamics::computeJointTorques(const Eigen::VectorXd& x) {
+  spring_torque_.setZero();
+  damping_torque_.setZero();
+  if (stiffness_model_ == StiffnessModel::kPaper) {
+    paperSpringTorques(x);
+  } else {
+    bendingSpringTorques(x);
+  }
+  torque_ = spring_torque_ + damping_torque_;
+}
+
+void ChainDynamics::paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& q, Eigen::VectorXd& qd) const {
+  double psi_prev = 0.0, phi_prev = 0.0, psi_rate_prev = 0.0, phi_rate_prev = 0.0;
+  for (int k = 0; k < n_; ++k) {
+    const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k)).normalized();
+    const Eigen::Vector3d omega = x.segment<3>(StateLayout::omega(k));
+    const double horizontal = std::hypot(axis.x(), axis.y());
+    const double te = std::atan2(horizontal, axis.z());
+    double psi = psi_reference_(k);
+    if (horizontal > kVerticalSine) psi += wrapToPi(std::atan2(axis.x(), axis.y()) - psi_reference_(k));
+    const double phi = x(StateLayout::twist(k)) - psi;
+    Eigen::Vector3d nvec, evec;
+    eulerAxes(te, psi, nvec, evec);
+    const double te_rate = -omega.dot(nvec);
+    // Straight down, the rotation about the vertical is all counted as torsion (only psi + phi is defined).
+    const double psi_rate = horizontal > kVerticalSine ? omega.dot(evec) / std::sin(te) : 0.0;
+    const double phi_rate = -omega.dot(axis) - psi_rate * std::cos(te);
+    q.segment<3>(3 * k) << te, psi - psi_prev, phi - phi_prev;
+    qd.segment<3>(3 * k) << te_rate, psi_rate - psi_rate_prev, phi_rate - phi_rate_prev;
+    psi_prev = psi;
+    phi_prev = phi;
+    psi_rate_prev = psi_rate;
+    phi_rate_prev = phi_rate;
+  }
+}
+
+void ChainDynamics::stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const {
+  x.setZero(stateSize());
+  double psi = 0.0, phi = 0.0, psi_rate = 0.0, phi_rate = 0.0;
+  for (int k = 0; k < n_; ++k) {
+    psi += q(3 * k + 1);
+    phi += q(3 * k + 2);
+    psi_rate += qd(3 * k + 1);
+    phi_rate += qd(3 * k + 2);
+    const double te = q(3 * k), te_rate = qd(3 * k);
+    const Eigen::Vector3d axis = linkAxis(te, psi);
+    Eigen::Vector3d nvec, evec;
+    eulerAxes(te, psi, nvec, evec);
+    x.segment<3>(StateLayout::axis(k)) = axis;
+    x(StateLayout::twist(k)) = psi + phi;
+    x.segment<3>(StateLayout::omega(k)) = -psi_rate * kDown - te_rate * nvec - phi_rate * axis;
+  }
+}
+
+void ChainDynamics::paperSpringTorques(const Eigen::VectorXd& x) {
+  // The paper's springs and dampers act on the generalized coordinates: Q = -K q - C q'. Mapped to
+  // world torques by virtual power: tau = -Q_te n + (Q_psi - Q_phi cos te)/sin te e - Q_phi u, with
+  // Q in the absolute angles (Q_psi_i = Q_a_i - Q_a_{i+1}). Azimuth and torsion springs have no limit
+  // as sin te -> 0 unless Q_psi = Q_phi: the paper's K is singular there (docs/MODEL.md section 5).
+  const int n = n_;
+  const LinkProperties& p = props_;
+  Eigen::Matrix<double, 3, 1> q_next = Eigen::Vector3d::Zero(), c_next = Eigen::Vector3d::Zero();
+  // Paper coordinates in a forward pass, then torques backwards so Q_a_{i+1}, Q_t_{i+1} are at hand.
+  Eigen::Matrix3Xd& coords = paper_coords_;
+  Eigen::Matrix3Xd& rates = paper_rates_;
+  double psi_prev = 0.0, phi_prev = 0.0, psi_rate_prev = 0.0, phi_rate_prev = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3d axis = u_.col(k), omega = omega_.col(k);
+    const double horizontal = std::hypot(axis.x(), axis.y());
+    const double te = std::atan2(horizontal, axis.z());
+    double psi = psi_reference_(k);
+    if (horizontal > kVerticalSine) psi += wrapToPi(std::atan2(axis.x(), axis.y()) - psi_reference_(k));
+    const double phi = x(StateLayout::twist(k)) - psi;
+    Eigen::Vector3d nvec, evec;
+    eulerAxes(te, psi, nvec, evec);
+    const double psi_rate = horizontal > kVerticalSine ? omega.dot(evec) / std::sin(te) : 0.0;
+    const double phi_rate = -omega.dot(axis) - psi_rate * std::cos(te);
+    coords.col(k) << te, psi - psi_prev, phi - phi_prev;
+    rates.col(k) << -omega.dot(nvec), psi_rate - psi_rate_prev, phi_rate - phi_rate_prev;
+    paper_psi_(k) = psi;
+    psi_prev = psi, phi_prev = phi, psi_rate_prev = psi_rate, phi_rate_prev = phi_rate;
+  }
+  for (int k = n - 1; k >= 0; --k) {
+    const Eigen::Vector3d stiffness(p.stiffness_elevation(k), p.stiffness_azimuth(k), p.stiffness_torsion(k));
+    const Eigen::Vector3d damping(p.damping_elevation(k), p.damping_azimuth(k), p.damping_torsion(k));
+    const Eigen::Vector3d q_spring = -stiffness.cwiseProduct(coords.col(k));
+    const Eigen::Vector3d q_damper = -damping.cwiseProduct(rates.col(k));
+    const double te = coords(0, k);
+    const Eigen::Vector3d axis = u_.col(k);
+    Eigen::Vector3d nvec, evec;
+    eulerAxes(te, paper_psi_(k), nvec, evec);
+    const double sine = std::sin(te), cosine = std::cos(te);
+    const auto to_torque = [&](const Eigen::Vector3d& own, const Eigen::Vector3d& next) -> Eigen::Vector3d {
+      const double q_te = own(0), q_psi = own(1) - next(1), q_phi = own(2) - next(2);
+      const double across = std::abs(sine) > kVerticalSine ? (q_psi - q_phi * cosine) / sine : 0.0;
+      return -q_te * nvec + across * evec - q_phi * axis;
+    };
+    spring_torque_.col(k) = to_torque(q_spring, q_next);
+    damping_torque_.col(k) = to_torque(q_damper, c_next);
+    q_next = q_spring;
+    c_next = q_damper;
+  }
+}
+
+void ChainDynamics::bendingSpringTorques(const Eigen::VectorXd& x) {
+  // Joint k couples link k-1 (the fixed base direction, straight down, for k = 0) and link k.
+  const LinkProperties& p = props_;
+  for (int k = 0; k < n_; ++k) {
+    const Eigen::Vector3d prev = k > 0 ? Eigen::Vector3d(u_.col(k - 1)) : kDown;
+    const Eigen::Vector3d axis = u_.col(k);
+    const double twist_prev = k > 0 ? x(StateLayout::twist(k - 1)) : 0.0;
+    const Eigen::Vector3d cross = prev.cross(axis);
+    const double cosine = prev.dot(axis), sine = cross.norm();
+    const double bend = std::atan2(sine, cosine);
+    // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
+    const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * angleOverSine(bend, sine) * cross;
+    // Twist after parallel transport: tau = sigma_k - sigma_{k-1} - Omega (docs/MODEL.md section 5);
+    // a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
+    const double holonomy = -2.0 * std::atan2(kDown.dot(cross), 1.0 + prev.z() + axis.z() + cosine);
+    const double twist = x(StateLayout::twist(k)) - twist_prev - holonomy;
+    const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + cosine);
+    const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * twist * mean_axis;
+    // Dampers on the relative angular velocity: across the mean axis (bending) and about it (twist).
+    const Eigen::Vector3d relative = omega_.col(k) - (k > 0 ? Eigen::Vector3d(omega_.col(k - 1)) : Eigen::Vector3d::Zero());
+    const Eigen::Vector3d direction = (prev + axis).normalized();
+    const double about = relative.dot(direction);
+    const Eigen::Vector3d damper =
+        -p.damping_elevation(k) * (relative - about * direction) - p.damping_torsion(k) * about * direction;
+    spring_torque_.col(k) += bend_torque + twist_torque;
+    damping_torque_.col(k) += damper;
+    if (k > 0) {
+      spring_torque_.col(k - 1) -= bend_torque + twist_torque;
+      damping_torque_.col(k - 1) -= damper;
+    }
+  }
+}
+
+double ChainDynamics::elasticEnergy(const Eigen::VectorXd& x) const {
+  double energy = 0.0;
+  const LinkProperties& p = props_;
+  if (stiffness_model_ == StiffnessModel::kPaper) {
+    Eigen::VectorXd q(3 * n_), qd(3 * n_);  // off the hot path: evaluate() only
+    paperCoordinates(x, q, qd);
+    for (int k = 0; k < n_; ++k) {
+      energy += 0.5 * (p.stiffness_elevation(k) * q(3 * k) * q(3 * k) + p.stiffness_azimuth(k) * q(3 * k + 1) * q(3 * k + 1) +
+                       p.stiffness_torsion(k) * q(3 * k + 2) * q(3 * k + 2));
+    }
+    return energy;
+  }
+  for (int k = 0; k < n_; ++k) {
+    const Eigen::Vector3d prev = k > 0 ? Eigen::Vector3d(x.segment<3>(StateLayout::axis(k - 1)).normalized()) : kDown;
+    const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k)).normalized();
+    const Eigen::Vector3d cross = prev.cross(axis);
+    const double cosine = prev.dot(axis);
+    const double bend = std::atan2(cross.norm(), cosine);
+    const double holonomy = -2.0 * std::atan2(kDown.dot(cross), 1.0 + prev.z() + axis.z() + cosine);
+    const double twist = x(StateLayout::twist(k)) - (k > 0 ? x(StateLayout::twist(k - 1)) : 0.0) - holonomy;
+    energy += 0.5 * p.stiffness_elevation(k) * bend * bend + 0.5 * p.stiffness_torsion(k) * twist * twist;
+  }
+  return energy;
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,143 @@
+// The singularity-free equations of motion against the generated paper model: same accelerations at
+// random states away from the vertical (the paper model is itself checked against sympy), the same
+// spring forces, and the statics of a hanging cable.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "cable_dynamics/cable_simulator.h"
+#include "cable_dynamics/chain_dynamics.h"
+#include "cable_dynamics/config_loader.h"
+#include "cable_dynamics/elastic_joints.h"
+#include "cable_dynamics/paper_model.h"
+#include "cable_dynamics/states.h"
+
+using namespace cable_dynamics;
+
+namespace {
+
+CableParams makeParams(int n, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> overrides = {"cable.links=" + std::to_string(n)};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  CableParams p = loadConfigString(R"(
+cable: {links: 1, length: 1.0, diameter: 0.04, mass_per_length: 0.8}
+load: {mass: 2.0, volume: 0.0}
+fluid: {density: 0.0}
+)",
+                                   overrides);
+  for (int k = 0; k < n; ++k) p.link_lengths[k] = 0.6 + 0.15 * k;  // unequal links
+  return p;
+}
+
+/// Paper accelerations q'' from M q'' = -(h + G + elastic + D q').
+Eigen::VectorXd paperAccelerations(const CableParams& params, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+  const LinkProperties props = deriveLinkProperties(params);
+  const int dof = 3 * props.n;
+  PaperModel model(props);
+  ElasticJoints joints(props);
+  Eigen::MatrixXd M(dof, dof), D(dof, dof);
+  Eigen::VectorXd h(dof), G(dof), elastic(dof);
+  model.compute(q, qd, M, h, G);
+  joints.force(q, elastic);
+  joints.damping(D);
+  return M.ldlt().solve(-(h + G + elastic + D * qd));
+}
+
+/// Angular accelerations implied by paper accelerations: omega = -psi' e_z - te' n - phi' u, differentiated:
+/// omega' = -psi'' e_z - te'' n - phi'' u + te' psi' m - phi' (te' e + psi' w).
+Eigen::VectorXd omegaRateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) {
+  const int n = static_cast<int>(q.size()) / 3;
+  Eigen::VectorXd out(3 * n);
+  double psi = 0, psi_rate = 0, phi_rate = 0, psi_acc = 0, phi_acc = 0;
+  for (int k = 0; k < n; ++k) {
+    psi += q(3 * k + 1);
+    psi_rate += qd(3 * k + 1);
+    phi_rate += qd(3 * k + 2);
+    psi_acc += qdd(3 * k + 1);
+    phi_acc += qdd(3 * k + 2);
+    const double te = q(3 * k), te_rate = qd(3 * k), te_acc = qdd(3 * k);
+    const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d u = linkAxis(te, psi);
+    const Eigen::Vector3d nv(std::cos(psi), -std::sin(psi), 0.0), mv(std::sin(psi), std::cos(psi), 0.0);
+    const Eigen::Vector3d e(std::cos(te) * std::sin(psi), std::cos(te) * std::cos(psi), -std::sin(te));
+    const Eigen::Vector3d w = std::sin(te) * nv;
+    out.segment<3>(3 * k) = -psi_acc * ez - te_acc * nv - phi_acc * u + te_rate * psi_rate * mv -
+                            phi_rate * (te_rate * e + psi_rate * w);
+  }
+  return out;
+}
+
+void expectSameAccelerations(const CableParams& params, unsigned seed) {
+  const int n = params.links;
+  ChainDynamics chain(params);
+  Eigen::VectorXd q, qd;
+  randomState(n, seed, q, qd);
+  Eigen::VectorXd x;
+  chain.stateFromPaper(q, qd, x);
+  Eigen::VectorXd psi(n);
+  double sum = 0;
+  for (int k = 0; k < n; ++k) psi(k) = (sum += q(3 * k + 1));
+  chain.setAzimuthReference(psi);
+  ChainOutputs out;
+  ASSERT_TRUE(chain.evaluate(x, EndInputs(), out));
+  const Eigen::VectorXd expected = omegaRateFromPaper(q, qd, paperAccelerations(params, q, qd));
+  const double scale = expected.cwiseAbs().maxCoeff();
+  // Both sides are exact formulas; 1e-9 leaves room for the condition number of the two solves.
+  EXPECT_LT((out.omega_rate - expected).cwiseAbs().maxCoeff(), 1e-9 * scale) << "seed " << seed;
+  // The round trip paper -> state -> paper is exact away from the vertical.
+  Eigen::VectorXd q2(3 * n), qd2(3 * n);
+  chain.paperCoordinates(x, q2, qd2);
+  for (int i = 0; i < 3 * n; ++i) {
+    EXPECT_NEAR(std::remainder(q2(i) - q(i), 2 * M_PI), 0.0, 1e-12) << coordinateName(i);
+    EXPECT_NEAR(qd2(i), qd(i), 1e-12) << coordinateName(i);
+  }
+}
+
+}  // namespace
+
+TEST(ChainDynamics, AgreesWithPaperModelWithoutSprings) {
+  for (int n : {1, 2, 5}) {
+    for (unsigned seed = 1; seed <= 3; ++seed) expectSameAccelerations(makeParams(n), seed + 10 * n);
+  }
+}
+
+TEST(ChainDynamics, AgreesWithPaperModelWithPaperSpringsAndDampers) {
+  const CableParams p = makeParams(4, {"cable.stiffness={model: paper, elevation: 3.0, azimuth: 2.0, torsion: 0.5}",
+                                       "cable.damping={elevation: 0.3, azimuth: 0.2, torsion: 0.01}"});
+  for (unsigned seed = 1; seed <= 4; ++seed) expectSameAccelerations(p, seed);
+}
+
+TEST(ChainDynamics, AgreesWithPaperModelWithBendingSprings) {
+  const CableParams p = makeParams(4, {"cable.stiffness={model: bending, elevation: 3.0, torsion: 0.5}"});
+  for (unsigned seed = 1; seed <= 4; ++seed) expectSameAccelerations(p, seed);
+}
+
+TEST(ChainDynamics, HangingCableCarriesTheWeightBelow) {
+  // At rest straight down, the tension at joint k is the submerged weight of everything below it
+  // (a heavy cable: 3 kg/m against 1.29 kg/m of displaced water).
+  CableParams p = makeParams(6, {"fluid.density=1025", "load.volume=0.0005", "cable.mass_per_length=3.0"});
+  ChainDynamics chain(p);
+  Eigen::VectorXd x;
+  chain.stateFromPaper(Eigen::VectorXd::Zero(18), Eigen::VectorXd::Zero(18), x);
+  ChainOutputs out;
+  ASSERT_TRUE(chain.evaluate(x, EndInputs(), out));
+  const LinkProperties& props = chain.properties();
+  double below = props.load_submerged_mass;
+  for (int k = 5; k >= 0; --k) {
+    below += props.submerged_mass(k);
+    ASSERT_GT(below, 0.0);
+    EXPECT_NEAR(out.tension(k), props.gravity * below, 1e-12 * props.gravity * below) << "joint " << k + 1;
+  }
+  EXPECT_NEAR(out.omega_rate.norm(), 0.0, 1e-12);
+  EXPECT_NEAR(out.base_force.z(), props.gravity * below, 1e-9);
+  EXPECT_NEAR(out.load_force.z(), -props.gravity * props.load_submerged_mass, 1e-9);
+}
+
+TEST(ChainDynamics, RejectsNonFiniteState) {
+  ChainDynamics chain(makeParams(2));
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(chain.stateSize()), xdot(chain.stateSize());
+  x(2) = 1.0;
+  x(9) = 1.0;
+  x(5) = std::nan("");
+  EXPECT_FALSE(chain.derivative(x, EndInputs(), xdot));
+}
