@@ -61,6 +61,10 @@ CliOptions parseCli(int argc, const char* const* argv, const std::vector<std::st
       const std::vector<double> d = parseNumberList(value, flag);
       if (d.size() != 1 || d[0] <= 0.0) throw UsageError("--duration is '" + value + "': expected one number > 0 [s]");
       o.duration = d[0];
+    } else if (flag == "--sample") {
+      const std::vector<double> d = parseNumberList(value, flag);
+      if (d.size() != 1 || d[0] <= 0.0) throw UsageError("--sample is '" + value + "': expected one number > 0 [s]");
+      o.sample = d[0];
     } else if (flag == "--output") {
       o.output = value;
     } else if (flag == "--plot") {

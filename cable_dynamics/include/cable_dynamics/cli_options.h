@@ -23,6 +23,7 @@ struct CliOptions {
   std::optional<std::vector<double>> qd; ///< --qd v1,...,v3n [rad/s]
   std::optional<unsigned> random_seed;   ///< --random-state SEED
   std::optional<double> duration;        ///< --duration S [s]
+  std::optional<double> sample;          ///< --sample S, output interval [s]
   std::string output;                    ///< --output run.csv
   std::string plot;                      ///< --plot run.png
   bool help = false;                     ///< --help / -h
