@@ -36,3 +36,6 @@ add_rostest(test/load_config.test)
 
 catkin_add_gtest(test_chain_dynamics test/test_chain_dynamics.cpp)
 target_link_libraries(test_chain_dynamics cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+catkin_add_gtest(test_simulator test/test_simulator.cpp)
+target_link_libraries(test_simulator cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

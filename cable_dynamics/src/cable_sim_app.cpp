@@ -18,9 +18,10 @@ namespace cable_dynamics {
 namespace {
 
 const char* const kUsage =
-    "usage: cable_sim --config FILE [--set key.path=value ...] --duration S --output run.csv\n"
+    "usage: cable_sim --config FILE [--set key.path=value ...] [--duration S] --output run.csv\n"
     "                 [--plot run.png] [--sample S]\n"
-    "Simulates the cable offline and writes one CSV row every --sample seconds (default 0.01 s).\n";
+    "Simulates the cable offline and writes one CSV row every --sample seconds (default 0.01 s).\n"
+    "--duration defaults to the config's simulation.duration.\n";
 
 bool fileExists(const std::string& path) {
   struct stat info;
@@ -76,7 +77,6 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
       return 0;
     }
     if (o.config.empty()) throw UsageError("--config FILE is required");
-    if (!o.duration) throw UsageError("--duration S is required");
     if (o.output.empty()) throw UsageError("--output run.csv is required");
     if (o.sample) sample = *o.sample;
     params = loadConfigFile(o.config, o.overrides);
@@ -102,9 +102,10 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   SimulationSnapshot snapshot;
   sim.snapshot(snapshot);
   writeCsvRow(csv, snapshot);
-  const long steps = std::lround(*o.duration / sim.dt());
+  const double duration = o.duration ? *o.duration : params.simulation.duration;
+  const long steps = std::lround(duration / sim.dt());
   const long every = std::max(1L, std::lround(sample / sim.dt()));
-  ProgressBar progress(err, *o.duration);
+  ProgressBar progress(err, duration);
   long retried = 0;
   int status = 0;
   for (long i = 1; i <= steps; ++i) {

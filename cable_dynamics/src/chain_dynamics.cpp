@@ -260,10 +260,19 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   out.load_force = load_force_;
   out.base_force = -joint_force_.col(0);
   out.coupling_force = coupling_;
-  // Energies: translation integrated along each link, rotation of the link's thickness, the load.
-  double kinetic = 0.5 * props_.load_mass * tip_vel_.squaredNorm();
-  double potential = -load_weight_ * tip_pos_.z();
-  for (int k = 0; k < n; ++k) {
+  double kinetic = 0.0, potential = 0.0;
+  kineticAndPotential(kinetic, potential);
+  out.kinetic_energy = kinetic;
+  out.potential_energy = potential;
+  out.elastic_energy = elasticEnergy(x);
+  return true;
+}
+
+void ChainDynamics::kineticAndPotential(double& kinetic, double& potential) const {
+  // Translation integrated along each link, rotation of the link's thickness, the load.
+  kinetic = 0.5 * props_.load_mass * tip_vel_.squaredNorm();
+  potential = -load_weight_ * tip_pos_.z();
+  for (int k = 0; k < n_; ++k) {
     const double l = props_.length(k), m = mass_per_length_(k);
     const Eigen::Vector3d v = base_vel_.col(k), c = omega_.col(k).cross(u_.col(k));
     kinetic += 0.5 * m * (l * v.squaredNorm() + l * l * v.dot(c) + (l * l * l / 3.0) * c.squaredNorm());
@@ -272,10 +281,15 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
     kinetic += 0.5 * thick_transverse_(k) * (omega.squaredNorm() - spin * spin) + 0.5 * props_.inertia_polar(k) * spin * spin;
     potential -= weight_(k) * (base_pos_(2, k) + 0.5 * l * axis.z());
   }
-  out.kinetic_energy = kinetic;
-  out.potential_energy = potential;
-  out.elastic_energy = elasticEnergy(x);
-  return true;
+}
+
+double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude) {
+  kinematics(x, ends);
+  double kinetic = 0.0, potential = 0.0;
+  kineticAndPotential(kinetic, potential);
+  const double elastic = elasticEnergy(x);
+  magnitude = std::abs(kinetic) + std::abs(potential) + std::abs(elastic);
+  return kinetic + potential + elastic;
 }
 
 void ChainDynamics::jointTorques(const Eigen::VectorXd& x, Eigen::Matrix3Xd& torque) {

@@ -14,11 +14,17 @@ the same mistakes.  This module therefore starts from nothing but the *definitio
   axisymmetric inertia, translation of the terminal point load) and
 * the potential V (gravity minus buoyancy),
 
-and lets sympy do every derivative:
+and lets the computer take every derivative:
 
     M = d^2 T / dq' dq'^T                      (Hessian of T in the rates)
     h = (d/dt dT/dq')|_{q''=0} - dT/dq = (d(dT/dq')/dq) q' - dT/dq
     G = dV/dq
+
+The velocities (dc_k/dt, dR_k/dt) come from sympy.diff with q(t) as functions of time.  The
+Lagrange derivatives above are taken by a small memoized differentiator on the sympy expression
+graph (:class:`_Derivation`, only because sympy.diff is ~10x slower on these large unsimplified
+expressions); ``build(n, "sympy")`` does them with plain sympy.diff instead, and the tests check
+that both give the same M, h, G.
 
 so that  M q'' + h + G  equals the generalized forces of springs, damping and fluid (which are
 not part of this reference).  The angular velocity is obtained from the skew matrix
@@ -33,12 +39,14 @@ Conventions (same as the C++ package)
 * u_k = (sin te_k sin psi_k, sin te_k cos psi_k, cos te_k);  p_k = sum_{j<k} l_j u_j;
   c_k = p_k + l_k/2 u_k (Eq. 2 of the paper);  load at p_{n+1} = sum_{j<=n} l_j u_j.
 * R_k = Rz(-psi_k) Rx(-te_k) Rz(-phi_k), so that R_k e_z = u_k.
-* I_world,k = I_T (Id - u u^T) + I_P u u^T about the CoM.
+* I_world,k = I_T (Id - u u^T) + I_P u u^T about the CoM, so
+  T_rot,k = 1/2 w^T I_world w = 1/2 (I_T |u x w|^2 + I_P (u.w)^2)   (|u| = 1).
 * V = -g (sum_k ms_k z(c_k) + ms_load z(p_{n+1}))   (height is -z; ms = submerged mass).
 
 No symbolic simplification is performed (it is slow and unnecessary): the raw derivative trees
-are turned into numeric code with ``sympy.lambdify(..., cse=True)``, which removes the repeated
-sub-expressions.  Results are cached per n.
+are turned into numeric code with ``sympy.lambdify`` with common-subexpression elimination
+(its ``cse`` option, given sympy.cse with order="none", which is the same elimination as
+``cse=True`` without the slow canonical re-ordering).  Results are cached per n.
 
 Numeric interface
 -----------------
@@ -88,7 +96,6 @@ def link_orientation(te, psi, phi):
     return rot_z(-psi) * rot_x(-te) * rot_z(-phi)
 
 
-
 class _Derivation:
     """Memoized derivation D on expression DAGs, given by its values on the symbols.
 
@@ -96,8 +103,8 @@ class _Derivation:
     Applies the sum, product, power and chain rules (sin, cos) node by node and remembers the
     result of every sub-expression, so shared sub-expressions (the expressions from the energy
     are DAGs with heavy sharing) are differentiated once.  sympy.diff re-walks and re-checks
-    the whole result at every level, which makes h for n = 4 take minutes; the result here is
-    the same derivative (checked against sympy.diff by the tests for small n), just not slow.
+    the whole result at every level (n = 4: ~30 s for h instead of ~2 s here); the result here
+    is the same derivative (checked against sympy.diff by the tests for n = 2), just faster.
     Anything outside these node types raises instead of being guessed.
     """
 
@@ -238,7 +245,7 @@ class CableReference:
             # 1/2 w^T (I_T (Id - u u^T) + I_P u u^T) w, written with |u x w|^2 for
             # w^T (Id - u u^T) w (equal because |u| = 1).  Same value, but better numbers: the
             # form |w|^2 - (u.w)^2 cancels for spin about the axis and leaves I_T * eps * |w|^2,
-            # which swamps the torsion terms when I_T / I_P ~ 1e6 (a thin 10 m link).
+            # which swamps the torsion terms when I_T / I_P ~ 1e6 (25 m links, 25 mm thick).
             uw = uk.dot(w)
             uxw = uk.cross(w)
             T += (it[k] * uxw.dot(uxw) + ip[k] * uw**2) / 2
@@ -247,12 +254,11 @@ class CableReference:
         T += m_load * v_load.dot(v_load) / 2
         V += -g * ms_load * to_state(p[n])[2]
         self.T_expr, self.V_expr = T, V
-        self._u_state = [to_state(uk) for uk in u]
         timings["energies"] = time.perf_counter() - t0
 
         # --- Lagrange ---------------------------------------------------------------------
-        #   p = dT/dq',  M = dp/dq',  h = D p - dT/dq,  G = dV/dq,
-        # where D = sum_j q'_j d/dq_j is d/dt along a motion with q'' = 0, so D p is exactly
+        #   mom = dT/dq',  M = d mom/dq',  h = D mom - dT/dq,  G = dV/dq,
+        # where D = sum_j q'_j d/dq_j is d/dt along a motion with q'' = 0, so D mom is exactly
         # (d/dt dT/dq')|_{q''=0}.
         t1 = time.perf_counter()
         N = 3 * n
@@ -268,13 +274,13 @@ class CableReference:
                 return sum((sp.diff(expr, qj) * vj for qj, vj in zip(q, qd)), sp.S.Zero)
         else:
             raise ValueError("method must be 'dag' or 'sympy'")
-        p = [d_qd[i](T) for i in range(N)]
+        mom = [d_qd[i](T) for i in range(N)]  # generalized momenta dT/dq'
         Mx = sp.zeros(N, N)
         for i in range(N):
             for j in range(i, N):
-                Mx[i, j] = d_qd[j](p[i])
+                Mx[i, j] = d_qd[j](mom[i])
                 Mx[j, i] = Mx[i, j]  # a Hessian: symmetric, take the same expression
-        hx = sp.Matrix([d_time(p[i]) - d_q[i](T) for i in range(N)])
+        hx = sp.Matrix([d_time(mom[i]) - d_q[i](T) for i in range(N)])
         Gx = sp.Matrix([d_q[i](V) for i in range(N)])
         self.M_expr, self.h_expr, self.G_expr = Mx, hx, Gx
         timings["derivatives"] = time.perf_counter() - t1

@@ -93,6 +93,7 @@ struct InitialState {
 struct SimulationParams {
   double dt = 0.001;               ///< [s]
   std::string integrator = "rk4";  ///< rk4
+  double duration = 10.0;          ///< default length of an offline run (cable_sim without --duration) [s]
 };
 
 /// Every parameter of one cable, validated by the config loader; SI units.

@@ -32,8 +32,9 @@ struct StepReport {
 };
 
 /// Steps the chain with a fixed dt (RK4). A step whose state is not finite, whose mass matrix fails,
-/// or whose angular velocity exceeds the configured limit is discarded and retried as 2, 4, ..., 64
-/// substeps; if that fails too, the state stays as it was and the report says why.
+/// whose angular velocity exceeds a limit or whose energy balance moves by more than 1e-4 of the energy
+/// scale is discarded and retried as 2, 4, ..., 64 substeps; if that fails too, the state stays as it
+/// was and the report says why.
 class CableSimulator {
  public:
   explicit CableSimulator(const CableParams& params);
@@ -71,6 +72,9 @@ class CableSimulator {
  private:
   EndInputs endsAt(double t) const;
   bool advance(double h);
+  /// Energy balance (kinetic + potential + elastic + dissipated - work input) at x, time t [J]; `scale`
+  /// gets the sum of the magnitudes of its terms [J].
+  double energyBalance(const Eigen::VectorXd& x, double t, double& scale);
 
   CableParams params_;
   ChainDynamics dynamics_;

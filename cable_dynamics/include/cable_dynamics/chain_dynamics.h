@@ -80,6 +80,11 @@ class ChainDynamics {
   /// Accelerations, forces along the cable and energies at x. Returns false like derivative().
   bool evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out);
 
+  /// Kinetic + potential + elastic energy at x [J]: the energies of evaluate() without solving for the
+  /// accelerations (O(n)); used to catch a step that created energy. `magnitude` gets the sum of the
+  /// three terms' absolute values [J].
+  double mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude);
+
   /// Paper coordinates (3n) and rates (3n) of state x; psi continues from the azimuth reference.
   void paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& q, Eigen::VectorXd& qd) const;
 
@@ -100,6 +105,7 @@ class ChainDynamics {
   void paperSpringTorques(const Eigen::VectorXd& x);
   void bendingSpringTorques(const Eigen::VectorXd& x);
   double elasticEnergy(const Eigen::VectorXd& x) const;
+  void kineticAndPotential(double& kinetic, double& potential) const;
 
   int n_;
   LinkProperties props_;
