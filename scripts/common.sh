@@ -15,7 +15,7 @@ DEB_PACKAGES=(
   librostest-dev libgtest-dev googletest libtf2-ros-dev liburdfdom-dev libeigen3-dev libyaml-cpp-dev
   nlohmann-json3-dev libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev libvisualization-msgs-dev
   libdiagnostic-msgs-dev python3-std-msgs python3-geometry-msgs python3-sensor-msgs
-  python3-sympy python3-numpy python3-pytest
+  python3-sympy python3-numpy python3-pytest python3-yaml python3-matplotlib libmujoco-dev
 )
 
 # Installs the Debian packages that are missing (apt-get update first), as root or through sudo.

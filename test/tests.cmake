@@ -20,8 +20,10 @@ target_compile_definitions(test_cable_model_cli PRIVATE CABLE_CONFIG_DIR="${CMAK
 set(CABLE_PYTHON /usr/bin/python3)
 function(cable_add_pytest name file)
   set(xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/pytest-${name}.xml)
+  # catkin splits COMMAND on ';': pass the environment as one space-separated string.
+  string(REPLACE ";" " " environment "${ARGN}")
   catkin_run_tests_target("pytest" ${name} "pytest-${name}.xml"
-    COMMAND "${CMAKE_COMMAND} -E env ${ARGN} ${CABLE_PYTHON} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_SOURCE_DIR}/${file} --junitxml=${xml}"
+    COMMAND "${CMAKE_COMMAND} -E env ${environment} ${CABLE_PYTHON} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_SOURCE_DIR}/${file} --junitxml=${xml}"
     WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
 endfunction()
 
@@ -39,3 +41,13 @@ target_link_libraries(test_chain_dynamics cable_dynamics_core ${GTEST_MAIN_LIBRA
 
 catkin_add_gtest(test_simulator test/test_simulator.cpp)
 target_link_libraries(test_simulator cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+# Multibody reference: MuJoCo from Debian (libmujoco-dev).
+find_package(mujoco REQUIRED)
+catkin_add_gtest(test_mujoco_reference test/test_mujoco_reference.cpp test/reference/mujoco_chain.cpp)
+target_include_directories(test_mujoco_reference PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/test)
+target_link_libraries(test_mujoco_reference cable_dynamics_core mujoco::mujoco ${GTEST_MAIN_LIBRARIES})
+
+cable_add_pytest(presets test/test_presets.py
+  CABLE_SIM_BIN=$<TARGET_FILE:cable_sim> CABLE_MODEL_BIN=$<TARGET_FILE:cable_model>)
+add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim cable_model)
