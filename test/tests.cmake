@@ -43,10 +43,13 @@ catkin_add_gtest(test_simulator test/test_simulator.cpp)
 target_link_libraries(test_simulator cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
 # Multibody reference: MuJoCo from Debian (libmujoco-dev).
-find_package(mujoco REQUIRED)
+# (Debian's mujocoConfig.cmake names /usr/include/libqhull_r, which the package does not install, so the
+# library and header are found directly.)
+find_library(MUJOCO_LIBRARY mujoco REQUIRED)
+find_path(MUJOCO_INCLUDE_DIR mujoco/mujoco.h REQUIRED)
 catkin_add_gtest(test_mujoco_reference test/test_mujoco_reference.cpp test/reference/mujoco_chain.cpp)
-target_include_directories(test_mujoco_reference PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/test)
-target_link_libraries(test_mujoco_reference cable_dynamics_core mujoco::mujoco ${GTEST_MAIN_LIBRARIES})
+target_include_directories(test_mujoco_reference PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/test ${MUJOCO_INCLUDE_DIR})
+target_link_libraries(test_mujoco_reference cable_dynamics_core ${MUJOCO_LIBRARY} ${GTEST_MAIN_LIBRARIES})
 
 cable_add_pytest(presets test/test_presets.py
   CABLE_SIM_BIN=$<TARGET_FILE:cable_sim> CABLE_MODEL_BIN=$<TARGET_FILE:cable_model>)
