@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <iomanip>
 #include <sys/stat.h>
 
@@ -88,9 +89,17 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
     return 2;
   }
 
-  CableSimulator sim(params);
+  std::unique_ptr<CableSimulator> simulator;
+  try {
+    simulator = std::make_unique<CableSimulator>(params);
+  } catch (const std::invalid_argument& e) {
+    err << "cable_sim: " << e.what() << "\n";
+    return 2;
+  }
+  CableSimulator& sim = *simulator;
   const double stable = sim.estimateStableTimeStep();
-  err << "cable_sim: " << params.links << " links, dt = " << sim.dt() << " s, estimated largest stable RK4 step "
+  err << "cable_sim: " << params.links << " links, " << params.simulation.integrator << ", dt = " << sim.dt()
+      << " s, estimated largest stable RK4 step "
       << stable << " s" << (sim.dt() > stable ? "  (dt is larger: expect substeps or divergence)" : "") << "\n";
 
   std::ofstream csv(o.output);

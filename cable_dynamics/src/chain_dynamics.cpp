@@ -73,6 +73,10 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   outboard_.assign(n, Eigen::Matrix3d::Zero());
   column_.assign(n, Eigen::Matrix3d::Zero());
   mass_matrix_.setZero(3 * n, 3 * n);
+  for (Eigen::MatrixXd* m : {&jacobian_velocity_, &jacobian_rotation_, &system_}) m->setZero(3 * n, 3 * n);
+  for (Eigen::VectorXd* v : {&force_plus_, &force_minus_, &velocity_, &step_rhs_, &delta_}) v->setZero(3 * n);
+  perturbed_.setZero(StateLayout::size(n));
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(3 * n);
   rhs_.setZero(3 * n);
   llt_ = Eigen::LLT<Eigen::MatrixXd>(3 * n);
 }
@@ -140,7 +144,7 @@ void ChainDynamics::externalForces(const EndInputs& ends) {
   }
 }
 
-void ChainDynamics::assemble() {
+void ChainDynamics::assembleForces() {
   const int n = n_;
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int k = 0; k < n; ++k) {
@@ -166,6 +170,11 @@ void ChainDynamics::assemble() {
     outboard_force += force_.col(k) - inertial_force_.col(k);
     outboard += l * a;
   }
+}
+
+void ChainDynamics::assembleMass() {
+  const int n = n_;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   // M_rj = -l_r [u_r]x E_j [u_j]x for r < j with E_j = l_j (l_j/2 A_j + B_j); diagonal blocks use
   // l_j^2 (l_j/3 A_j + B_j) plus the thickness inertia of the link.
   for (int j = 0; j < n; ++j) {
@@ -219,7 +228,8 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends) {
   kinematics(x, ends);
   externalForces(ends);
   computeJointTorques(x);
-  assemble();
+  assembleForces();
+  assembleMass();
   llt_.compute(mass_matrix_);
   if (llt_.info() != Eigen::Success) return false;
   llt_.solveInPlace(rhs_);  // rhs_ now holds the angular accelerations
@@ -268,6 +278,86 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   return true;
 }
 
+void ChainDynamics::generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& out) {
+  kinematics(x, ends);
+  externalForces(ends);
+  computeJointTorques(x);
+  assembleForces();
+  out = rhs_;
+}
+
+bool ChainDynamics::semiImplicitStep(const Eigen::VectorXd& x, const EndInputs& ends, double h, Eigen::VectorXd& next) {
+  assert(x.size() == stateSize() && next.size() == stateSize());
+  if (!x.allFinite()) return false;
+  const int n = n_, dof = 3 * n;
+  // Jacobians of the generalized forces (external, springs, dampers and the velocity terms) with respect
+  // to the angular velocities and to small rotations of each link, by central differences. Each column
+  // costs one O(n) force evaluation, O(n^2) in all: cheaper than the O(n^3) solve below.
+  const double eps = 1e-6;
+  perturbed_ = x;
+  for (int j = 0; j < dof; ++j) {
+    const int index = StateLayout::omega(j / 3) + j % 3;
+    perturbed_(index) = x(index) + eps;
+    generalizedForces(perturbed_, ends, force_plus_);
+    perturbed_(index) = x(index) - eps;
+    generalizedForces(perturbed_, ends, force_minus_);
+    perturbed_(index) = x(index);
+    jacobian_velocity_.col(j) = (force_plus_ - force_minus_) / (2.0 * eps);
+  }
+  // The rotation Jacobian is the stiffness: it leaves the dampers out. (The paper's elevation damper
+  // turns with the azimuth, which is ill-conditioned near the vertical; its rate Jacobian above is not.)
+  skip_damping_ = true;
+  for (int j = 0; j < dof; ++j) {
+    const int k = j / 3;
+    const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k)).normalized();
+    const Eigen::Vector3d turn = Eigen::Vector3d::Unit(j % 3);
+    // A rotation by e about `turn` moves u by e turn x u and sigma by -e turn.(e_z + u)/(1 + u_z).
+    const double twist_rate = 1.0 + axis.z() > 1e-12 ? -turn.dot(kDown + axis) / (1.0 + axis.z()) : -turn.dot(axis);
+    for (const double sign : {1.0, -1.0}) {
+      perturbed_.segment<3>(StateLayout::axis(k)) = (axis + sign * eps * turn.cross(axis)).normalized();
+      perturbed_(StateLayout::twist(k)) = x(StateLayout::twist(k)) + sign * eps * twist_rate;
+      generalizedForces(perturbed_, ends, sign > 0 ? force_plus_ : force_minus_);
+    }
+    perturbed_.segment<3>(StateLayout::axis(k)) = x.segment<3>(StateLayout::axis(k));
+    perturbed_(StateLayout::twist(k)) = x(StateLayout::twist(k));
+    jacobian_rotation_.col(j) = (force_plus_ - force_minus_) / (2.0 * eps);
+  }
+  skip_damping_ = false;
+  // Linearized backward Euler in the velocities: M dw = h (Q(x_n) + K_r h (w_n + dw) + K_w dw), with
+  // K_r, K_w the Jacobians above, then the orientations advance with the new velocities.
+  generalizedForces(x, ends, force_plus_);
+  assembleMass();
+  system_ = mass_matrix_ - h * jacobian_velocity_ - (h * h) * jacobian_rotation_;
+  for (int k = 0; k < n; ++k) velocity_.segment<3>(3 * k) = omega_.col(k);
+  step_rhs_.noalias() = jacobian_rotation_ * velocity_;
+  step_rhs_ = h * (force_plus_ + h * step_rhs_);
+  lu_.compute(system_);
+  delta_.noalias() = lu_.solve(step_rhs_);
+  if (!delta_.allFinite()) return false;
+  // Forces along the cable and the powers, with the step's mean angular acceleration.
+  rhs_ = delta_ / h;
+  jointForces();
+  double damping_power = 0.0;
+  for (int k = 0; k < n; ++k) damping_power += damping_torque_.col(k).dot(omega_.col(k));
+  input_power_ = joint_force_.col(0).dot(ends.base_velocity) + coupling_.dot(tip_vel_);
+  next = x;
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3d omega = omega_.col(k) + delta_.segment<3>(3 * k);
+    const Eigen::Vector3d axis = u_.col(k);
+    const double angle = h * omega.norm();
+    Eigen::Vector3d turned = axis;
+    if (angle > 0.0) turned = Eigen::AngleAxisd(angle, omega.normalized()) * axis;
+    next.segment<3>(StateLayout::axis(k)) = turned;
+    const double denominator = 1.0 + axis.z();
+    next(StateLayout::twist(k)) +=
+        h * (denominator > 1e-12 ? -omega.dot(kDown + axis) / denominator : -omega.dot(axis));
+    next.segment<3>(StateLayout::omega(k)) = omega;
+  }
+  next(StateLayout::dissipated(n)) -= h * (drag_power_ + added_mass_power_ + damping_power);
+  next(StateLayout::workInput(n)) += h * input_power_;
+  return next.allFinite();
+}
+
 void ChainDynamics::kineticAndPotential(double& kinetic, double& potential) const {
   // Translation integrated along each link, rotation of the link's thickness, the load.
   kinetic = 0.5 * props_.load_mass * tip_vel_.squaredNorm();
@@ -306,6 +396,7 @@ void ChainDynamics::computeJointTorques(const Eigen::VectorXd& x) {
   } else {
     bendingSpringTorques(x);
   }
+  if (skip_damping_) damping_torque_.setZero();
   torque_ = spring_torque_ + damping_torque_;
 }
 

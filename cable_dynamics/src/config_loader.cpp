@@ -324,7 +324,7 @@ CableParams parseConfig(const YAML::Node& root) {
 
   Section simulation = top.sub("simulation");
   p.simulation.dt = simulation.number("dt", 0.001, 0.0, 0.1, true, "s");
-  p.simulation.integrator = simulation.choice("integrator", "rk4", {"rk4"});
+  p.simulation.integrator = simulation.choice("integrator", "rk4", {"rk4", "semi_implicit"});
   p.simulation.duration = simulation.number("duration", 10.0, 0.0, 1e7, true, "s");
   simulation.rejectUnknownKeys();
   top.rejectUnknownKeys();

@@ -31,12 +31,14 @@ struct StepReport {
   std::string message;  ///< why the step failed (time and state), empty when ok
 };
 
-/// Steps the chain with a fixed dt (RK4). A step whose state is not finite, whose mass matrix fails,
+/// Steps the chain with a fixed dt (RK4, or the semi-implicit integrator of ChainDynamics). A step whose state is not finite, whose mass matrix fails,
 /// whose angular velocity exceeds a limit or whose energy balance moves by more than 1e-4 of the energy
 /// scale is discarded and retried as 2, 4, ..., 64 substeps; if that fails too, the state stays as it
 /// was and the report says why.
 class CableSimulator {
  public:
+  /// Throws std::invalid_argument when the paper stiffness model has azimuth or torsion springs or
+  /// dampers (singular at the vertical: use the bending model), naming the key.
   explicit CableSimulator(const CableParams& params);
 
   /// Back to the configured initial state at t = 0.
@@ -72,6 +74,8 @@ class CableSimulator {
  private:
   EndInputs endsAt(double t) const;
   bool advance(double h);
+  /// After a step: axes back on the unit sphere, and the checks for divergence.
+  bool acceptable(double balance_before, double scale_before);
   /// Energy balance (kinetic + potential + elastic + dissipated - work input) at x, time t [J]; `scale`
   /// gets the sum of the magnitudes of its terms [J].
   double energyBalance(const Eigen::VectorXd& x, double t, double& scale);
@@ -79,6 +83,7 @@ class CableSimulator {
   CableParams params_;
   ChainDynamics dynamics_;
   double dt_;
+  bool semi_implicit_;
   double time_ = 0.0;
   double omega_limit_;
   Eigen::VectorXd x_, x_start_, k1_, k2_, k3_, k4_, stage_;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <Eigen/Core>
 #include <Eigen/StdVector>
 
@@ -77,6 +78,12 @@ class ChainDynamics {
   /// is not positive definite; xdot is then unspecified.
   bool derivative(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& xdot);
 
+  /// One step of length h [s] of the semi-implicit integrator: backward Euler in the angular velocities,
+  /// linearized with the Jacobians of the generalized forces (springs, dampers, drag, coupling), then the
+  /// orientations advance with the new velocities. First order, but stable for stiff springs and strong
+  /// drag. Returns false when a state is not finite or the linear system is singular.
+  bool semiImplicitStep(const Eigen::VectorXd& x, const EndInputs& ends, double h, Eigen::VectorXd& next);
+
   /// Accelerations, forces along the cable and energies at x. Returns false like derivative().
   bool evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out);
 
@@ -99,7 +106,10 @@ class ChainDynamics {
   bool solve(const Eigen::VectorXd& x, const EndInputs& ends);
   void kinematics(const Eigen::VectorXd& x, const EndInputs& ends);
   void externalForces(const EndInputs& ends);
-  void assemble();
+  void assembleForces();  ///< tensors, outboard sums and the right-hand side rhs_ (O(n))
+  void assembleMass();    ///< the mass matrix (O(n^2)), after assembleForces()
+  /// Generalized forces (rhs of M omega' = rhs) at x: O(n), no mass matrix.
+  void generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& out);
   void jointForces();
   void computeJointTorques(const Eigen::VectorXd& x);
   void paperSpringTorques(const Eigen::VectorXd& x);
@@ -143,6 +153,11 @@ class ChainDynamics {
   Eigen::Matrix3Xd paper_coords_, paper_rates_;      ///< (3 x n) paper springs' (te, a, t) and rates
   Eigen::VectorXd paper_psi_;                        ///< (n) absolute azimuths [rad]
   Eigen::Matrix3Xd link_base_acc_;                   ///< (3 x n) acceleration of each link's base end [m/s^2]
+  // Semi-implicit integrator workspace.
+  Eigen::MatrixXd jacobian_velocity_, jacobian_rotation_, system_;  ///< (3n x 3n)
+  Eigen::VectorXd perturbed_, force_plus_, force_minus_, velocity_, step_rhs_, delta_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  bool skip_damping_ = false;  ///< generalized forces without the dampers (the stiffness Jacobian)
 };
 
 }  // namespace cable_dynamics
