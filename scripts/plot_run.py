@@ -234,9 +234,12 @@ def plot_energies(ax, cols):
             fin = np.flatnonzero(np.isfinite(v))
             if fin.size >= 2:
                 change = v[fin[-1]] - v[fin[0]]
-                ref = np.nanmax(np.abs(v))
+                # Relative to the energy that moves around (the largest of the terms), not to the total,
+                # which may sit near zero.
+                terms = [np.abs(cols[n]) for n, _, _ in ENERGY_SERIES if n in cols and n != "total_energy"]
+                ref = max((np.nanmax(a) for a in terms), default=0.0)
                 label = "total (change %+.3g J%s)" % (
-                    change, ", %+.2g%%" % (100.0 * change / ref) if ref > 0 else "")
+                    change, ", %+.2g%% of the largest term" % (100.0 * change / ref) if ref > 0 else "")
         style = dict(style)
         ax.plot(t, v, label=label, linewidth=style.pop("linewidth", 1.3), marker="o" if len(t) < 3 else None,
                 **style)

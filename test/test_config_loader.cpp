@@ -154,6 +154,7 @@ TEST(ConfigLoader, RejectsWrongTypes) {
   expectRejected("load.mode=floating", "load.mode");
   expectRejected("cable.stiffness.model=spring", "cable.stiffness.model");
   expectRejected("simulation.integrator=euler", "simulation.integrator");
+  EXPECT_EQ(loadConfigString(kMinimal, {"simulation.integrator=semi_implicit"}).simulation.integrator, "semi_implicit");
   expectRejected("simulation.dt=0", "simulation.dt");
   expectRejected("initial.azimuth=[0.1, 0.2]", "initial.azimuth");
   expectRejected("cable.stiffness=3", "cable.stiffness");
@@ -164,6 +165,39 @@ TEST(ConfigLoader, RejectsUnknownKeys) {
   expectRejected("fluid.densty=1000", "fluid.densty");
   expectRejected("cable.stiffness.bend=1", "cable.stiffness.bend");
   expectRejected("solver.dt=0.1", "solver");
+}
+
+TEST(ConfigLoader, MotionsAndCurrentProfile) {
+  const CableParams p = loadConfigString(kMinimal, {"base.motion={amplitude: [0, 0, 1.0], period: 8.0}",
+                                                    "load.mode=attached", "load.motion.velocity=[0.1, 0, 0]",
+                                                    "fluid.current=[0, 0, 0]",
+                                                    "fluid.current_profile=[[0, 1.0, 0, 0], [20, 0.2, 0, 0]]"});
+  EXPECT_DOUBLE_EQ(p.base.motion.amplitude.z(), 1.0);
+  EXPECT_DOUBLE_EQ(p.base.motion.period, 8.0);
+  EXPECT_DOUBLE_EQ(p.load.motion.velocity.x(), 0.1);
+  EXPECT_EQ(p.load.mode, cable_dynamics::LoadMode::kAttached);
+  ASSERT_EQ(p.fluid.current_profile.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.fluid.current_profile[1](0), 20.0);
+  EXPECT_DOUBLE_EQ(p.fluid.current_profile[1](1), 0.2);
+}
+
+TEST(ConfigLoader, RejectsBadMotionsAndProfiles) {
+  expectRejected("base.motion.period=0", "base.motion.period");
+  expectRejected("base.motion.amplitude=[1, 2]", "base.motion.amplitude");
+  expectRejected("base.motion.phase=1", "base.motion.phase");
+  expectRejected("load.coupling.stiffness=0", "load.coupling.stiffness");
+  expectRejected("load.coupling.damping=-1", "load.coupling.damping");
+  expectRejected("fluid.current_profile=[[10, 1, 0, 0], [5, 1, 0, 0]]", "fluid.current_profile[1]");
+  expectRejected("fluid.current_profile=[[10, 1, 0]]", "fluid.current_profile[0].row");
+  expectRejected("fluid.current_profile=fast", "fluid.current_profile");
+  expectRejected("fluid.drag_points=9", "fluid.drag_points");
+  expectRejected("simulation.duration=-1", "simulation.duration");
+  try {
+    loadConfigString(kMinimal, {"fluid.current=[1, 0, 0]", "fluid.current_profile=[[0, 1, 0, 0]]"});
+    ADD_FAILURE() << "current with a profile accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "fluid.current");
+  }
 }
 
 TEST(ConfigLoader, RejectsAmbiguousPairs) {
