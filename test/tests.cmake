@@ -54,3 +54,17 @@ target_link_libraries(test_mujoco_reference cable_dynamics_core ${MUJOCO_LIBRARY
 cable_add_pytest(presets test/test_presets.py
   CABLE_SIM_BIN=$<TARGET_FILE:cable_sim> CABLE_MODEL_BIN=$<TARGET_FILE:cable_model>)
 add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim cable_model)
+
+# The node over ROS: rates, outputs, input guards, bad parameters.
+add_rostest_gtest(test_cable_node test/cable_node.test test/node/test_cable_node.cpp)
+target_include_directories(test_cable_node PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
+target_link_libraries(test_cable_node ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+add_dependencies(test_cable_node cable_msgs_generate_messages_cpp cable_dynamics_node)
+add_rostest(test/bad_config.test DEPENDENCIES cable_dynamics_node)
+# rostest finds test_bad_config.py as a node of this package in the devel space through this link.
+execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/test_bad_config.py
+  ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/test_bad_config.py)
+
+# The cable URDF parses back with urdfdom.
+catkin_add_gtest(test_cable_urdf test/test_cable_urdf.cpp)
+target_link_libraries(test_cable_urdf cable_dynamics_urdf ${GTEST_MAIN_LIBRARIES})

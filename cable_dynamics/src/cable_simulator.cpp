@@ -37,8 +37,9 @@ void rejectSingularPaperSprings(const CableParams& p) {
   for (const auto& [key, value] : values) {
     if (value != 0.0) {
       throw std::invalid_argument(std::string(key) + " = " + std::to_string(value) +
-                                  ": the simulator needs 0 with cable.stiffness.model: paper (the paper's azimuth "
-                                  "and torsion springs and dampers are singular at the vertical); use model: bending");
+                                  ": expected 0 with cable.stiffness.model: paper in the simulator (the paper's "
+                                  "azimuth and torsion springs and dampers are singular at the vertical); use "
+                                  "model: bending");
     }
   }
   // The paper's elevation damper acts along the azimuth's direction, which swings fast as a link passes
@@ -46,8 +47,8 @@ void rejectSingularPaperSprings(const CableParams& p) {
   // (measured: a 10 ms step stalls the current preset away from its steady state). RK4 tracks it.
   if (p.simulation.integrator == "semi_implicit" && p.damping.elevation != 0.0) {
     throw std::invalid_argument("cable.damping.elevation = " + std::to_string(p.damping.elevation) +
-                                ": with simulation.integrator: semi_implicit, joint dampers need "
-                                "cable.stiffness.model: bending (or use integrator: rk4)");
+                                ": expected 0 with simulation.integrator: semi_implicit unless "
+                                "cable.stiffness.model is bending (or use integrator: rk4)");
   }
 }
 

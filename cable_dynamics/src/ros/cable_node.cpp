@@ -127,11 +127,11 @@ void CableNode::prepareMessages() {
     m.pose.orientation.w = 1.0;
     m.color.a = 1.0;
   }
-  const double width = std::max(4.0 * params_.diameter, 0.004 * params_.totalLength());
+  const double width = std::max(4.0 * params_.diameter, 0.008 * params_.totalLength());
   marker_msg_.markers[0].scale.x = width;
   marker_msg_.markers[0].points.resize(n + 1);
   marker_msg_.markers[0].colors.resize(n + 1);
-  const double load_size = std::max(0.3, 3.0 * width);
+  const double load_size = std::max(0.5, 0.03 * params_.totalLength());
   marker_msg_.markers[1].scale.x = marker_msg_.markers[1].scale.y = marker_msg_.markers[1].scale.z = load_size;
   marker_msg_.markers[1].color.r = 1.0;
   marker_msg_.markers[1].color.g = 0.8;

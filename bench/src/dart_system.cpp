@@ -1,0 +1,114 @@
+// DART 6 (Debian's libdart-dev): BallJoint chain in a bare Skeleton (no World, no collision), the
+// forward dynamics by Skeleton::computeForwardDynamics() (articulated-body algorithm), and a
+// hand-written classical RK4 whose position updates use DART's own Skeleton::integratePositions()
+// (for a BallJoint: R <- R exp(dt w), the exponential map): every stage starts from the step's
+// initial positions, as MuJoCo's RK4 does with mj_integratePos.
+//
+// DART ships dart::integration::RK4Integrator, but it drives an IntegrableSystem, an interface that
+// Skeleton does not implement in DART 6 (World steps with semi-implicit Euler only): there is no DART
+// RK4 to call on a Skeleton as it is, so the RK4 is written here around DART's own calls.
+#include <dart/dynamics/BallJoint.hpp>
+#include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/Inertia.hpp>
+#include <dart/dynamics/Skeleton.hpp>
+
+#include "chain_spec.h"
+
+namespace bench {
+namespace {
+
+using dart::dynamics::BallJoint;
+using dart::dynamics::BodyNode;
+using dart::dynamics::Inertia;
+using dart::dynamics::SkeletonPtr;
+
+class DartSystem : public System {
+ public:
+  explicit DartSystem(const ChainSpec& spec) : spec_(spec) {
+    skeleton_ = dart::dynamics::Skeleton::create("chain");
+    skeleton_->setGravity(Eigen::Vector3d(0.0, 0.0, spec.gravity));
+    BodyNode* parent = nullptr;
+    for (int k = 0; k < spec.n; ++k) {
+      BallJoint::Properties joint;
+      joint.mName = "ball" + std::to_string(k);
+      joint.mT_ParentBodyToJoint = Eigen::Isometry3d::Identity();
+      if (k > 0) joint.mT_ParentBodyToJoint.translation() = Eigen::Vector3d(0.0, 0.0, spec.length[k - 1]);
+      const double it = spec.bodyInertiaTransverse(k);
+      const Inertia inertia(spec.bodyMass(k), Eigen::Vector3d(0.0, 0.0, spec.bodyCom(k)),
+                            Eigen::Vector3d(it, it, spec.bodyInertiaPolar(k)).asDiagonal().toDenseMatrix());
+      BodyNode::Properties body(BodyNode::AspectProperties("link" + std::to_string(k), inertia));
+      parent = skeleton_->createJointAndBodyNodePair<BallJoint>(parent, joint, body).second;
+    }
+    last_ = parent;
+    const int dof = static_cast<int>(skeleton_->getNumDofs());
+    q0_.resize(dof);
+    for (int k = 0; k < spec.n; ++k) q0_.segment<3>(3 * k) = BallJoint::convertToPositions(spec.relativeRotation(k));
+    for (Eigen::VectorXd* v : {&q_, &v_, &qs_, &vs_, &a1_, &a2_, &a3_, &a4_, &vmean_}) v->setZero(dof);
+    reset();
+  }
+
+  void reset() override {
+    q_ = q0_;
+    v_.setZero();
+  }
+
+  void step() override {
+    const double h = spec_.dt;
+    accelerations(q_, v_, a1_);
+    // Stage 2: positions from q0 along the stage-1 velocity for h/2.
+    retract(v_, 0.5 * h, qs_);
+    vs_ = v_ + 0.5 * h * a1_;
+    accelerations(qs_, vs_, a2_);
+    vmean_ = v_ + 2.0 * vs_;  // running sum of v1 + 2 v2 + 2 v3 + v4
+    retract(vs_, 0.5 * h, qs_);
+    vs_ = v_ + 0.5 * h * a2_;
+    accelerations(qs_, vs_, a3_);
+    vmean_ += 2.0 * vs_;
+    retract(vs_, h, qs_);
+    vs_ = v_ + h * a3_;
+    accelerations(qs_, vs_, a4_);
+    vmean_ += vs_;
+    vmean_ /= 6.0;
+    retract(vmean_, h, qs_);
+    q_ = qs_;
+    v_ += (h / 6.0) * (a1_ + 2.0 * a2_ + 2.0 * a3_ + a4_);
+  }
+
+  double energy() override {
+    skeleton_->setPositions(q_);
+    skeleton_->setVelocities(v_);
+    return skeleton_->computeKineticEnergy() + skeleton_->computePotentialEnergy();
+  }
+
+  Eigen::Vector3d tip() override {
+    skeleton_->setPositions(q_);
+    return last_->getWorldTransform() * Eigen::Vector3d(0.0, 0.0, spec_.length.back());
+  }
+
+ private:
+  /// Forward dynamics at (q, v).
+  void accelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) {
+    skeleton_->setPositions(q);
+    skeleton_->setVelocities(v);
+    skeleton_->computeForwardDynamics();
+    a = skeleton_->getAccelerations();
+  }
+  /// out = q_ moved along the generalized velocity w for time dt by DART's own position update.
+  void retract(const Eigen::VectorXd& w, double dt, Eigen::VectorXd& out) {
+    skeleton_->setPositions(q_);
+    skeleton_->setVelocities(w);
+    skeleton_->integratePositions(dt);
+    out = skeleton_->getPositions();
+  }
+
+  ChainSpec spec_;
+  SkeletonPtr skeleton_;
+  BodyNode* last_ = nullptr;
+  Eigen::VectorXd q0_, q_, v_, qs_, vs_, a1_, a2_, a3_, a4_, vmean_;
+};
+
+}  // namespace
+
+std::unique_ptr<System> makeDart(const ChainSpec& spec) { return std::make_unique<DartSystem>(spec); }
+
+}  // namespace bench

@@ -1,0 +1,107 @@
+// MuJoCo (Debian's libmujoco-dev): ball joints, MuJoCo's own RK4 (integrator="RK4": mj_step runs the
+// forward dynamics 4 times and moves the quaternions with mj_integratePos at every stage).
+#include <cstring>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+#include <mujoco/mujoco.h>
+
+#include "chain_spec.h"
+
+namespace bench {
+namespace {
+
+std::string chainXml(const ChainSpec& s) {
+  std::ostringstream x;
+  x << std::setprecision(17);
+  x << "<mujoco model=\"bench_chain\">\n"
+    // Mass and inertia exactly as given: nothing inferred from geoms, bounded or rebalanced.
+    << "<compiler angle=\"radian\" inertiafromgeom=\"false\" boundmass=\"0\" boundinertia=\"0\" "
+       "balanceinertia=\"false\"/>\n"
+    << "<option timestep=\"" << s.dt << "\" integrator=\"RK4\" gravity=\"0 0 " << s.gravity
+    << "\" density=\"0\" viscosity=\"0\">\n"
+    // A free chain: no contacts, no constraint solver, no passive forces. Energy is computed on
+    // demand outside the timed loop (the flag would add an O(n^2) M-product to every step).
+    << "<flag contact=\"disable\" constraint=\"disable\" equality=\"disable\" frictionloss=\"disable\" "
+       "limit=\"disable\" passive=\"disable\" actuation=\"disable\" energy=\"disable\" warmstart=\"disable\"/>\n"
+    << "</option>\n<worldbody>\n";
+  for (int k = 0; k < s.n; ++k) {
+    // Body frame at the joint (the link's base end), z along the link: child k sits at (0, 0, l_{k-1}).
+    x << "<body name=\"l" << k << "\" pos=\"0 0 " << (k == 0 ? 0.0 : s.length[k - 1]) << "\">"
+      << "<joint type=\"ball\" damping=\"0\" armature=\"0\" stiffness=\"0\"/>"
+      << "<inertial pos=\"0 0 " << s.bodyCom(k) << "\" mass=\"" << s.bodyMass(k) << "\" diaginertia=\""
+      << s.bodyInertiaTransverse(k) << " " << s.bodyInertiaTransverse(k) << " " << s.bodyInertiaPolar(k) << "\"/>";
+    if (k == s.n - 1) x << "<site name=\"tip\" pos=\"0 0 " << s.length[k] << "\"/>";
+    x << "\n";
+  }
+  for (int k = 0; k < s.n; ++k) x << "</body>";
+  x << "\n</worldbody>\n</mujoco>\n";
+  return x.str();
+}
+
+class MujocoSystem : public System {
+ public:
+  explicit MujocoSystem(const ChainSpec& spec) : spec_(spec) {
+    const std::string xml = chainXml(spec);
+    mjVFS vfs;
+    mj_defaultVFS(&vfs);
+    if (mj_makeEmptyFileVFS(&vfs, "chain.xml", static_cast<int>(xml.size())) != 0) {
+      throw std::runtime_error("MuJoCo: cannot make the in-memory file");
+    }
+    std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, "chain.xml")], xml.data(), xml.size());
+    char error[1000] = "";
+    model_ = mj_loadXML("chain.xml", &vfs, error, sizeof(error));
+    mj_deleteVFS(&vfs);
+    if (model_ == nullptr) throw std::runtime_error(std::string("MuJoCo: ") + error);
+    data_ = mj_makeData(model_);
+    if (model_->nq != 4 * spec.n || model_->nv != 3 * spec.n) throw std::runtime_error("MuJoCo: unexpected nq/nv");
+    // Ball joint positions: the rotation relative to the parent, as a quaternion (w, x, y, z).
+    qpos0_.resize(model_->nq);
+    for (int k = 0; k < spec.n; ++k) {
+      const Eigen::Quaterniond q(spec.relativeRotation(k));
+      qpos0_[4 * k] = q.w();
+      qpos0_[4 * k + 1] = q.x();
+      qpos0_[4 * k + 2] = q.y();
+      qpos0_[4 * k + 3] = q.z();
+    }
+    tip_site_ = mj_name2id(model_, mjOBJ_SITE, "tip");
+    reset();
+  }
+  ~MujocoSystem() override {
+    mj_deleteData(data_);
+    mj_deleteModel(model_);
+  }
+
+  void reset() override {
+    mj_resetData(model_, data_);
+    for (int i = 0; i < model_->nq; ++i) data_->qpos[i] = qpos0_[i];
+    mj_forward(model_, data_);
+  }
+  void step() override { mj_step(model_, data_); }
+  double energy() override {
+    mj_forward(model_, data_);
+    mj_energyPos(model_, data_);
+    mj_energyVel(model_, data_);
+    return data_->energy[0] + data_->energy[1];
+  }
+  Eigen::Vector3d tip() override {
+    mj_forward(model_, data_);
+    const mjtNum* p = data_->site_xpos + 3 * tip_site_;
+    return {p[0], p[1], p[2]};
+  }
+
+ private:
+  ChainSpec spec_;
+  mjModel* model_ = nullptr;
+  mjData* data_ = nullptr;
+  std::vector<double> qpos0_;
+  int tip_site_ = -1;
+};
+
+}  // namespace
+
+std::unique_ptr<System> makeMujoco(const ChainSpec& spec) { return std::make_unique<MujocoSystem>(spec); }
+
+}  // namespace bench

@@ -1,0 +1,248 @@
+// The node's outputs and input guards, talking to it over ROS as a user would (test/cable_node.test).
+// Every wait is bounded. The tests run in order against one node.
+#include <cmath>
+#include <functional>
+
+#include <Eigen/Core>
+
+#include <cable_msgs/CableState.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/TwistStamped.h>
+#include <geometry_msgs/WrenchStamped.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+namespace {
+
+constexpr int kLinks = 6;            // test/node/node_test.yaml
+constexpr double kLength = 12.0;     // [m]
+const std::string kPrefix = "cable_test/";
+
+/// Everything the node publishes, kept as the latest message, with a check that no number is non-finite.
+struct Outputs {
+  sensor_msgs::JointState joints;
+  cable_msgs::CableState state;
+  visualization_msgs::MarkerArray markers;
+  geometry_msgs::WrenchStamped wrench;
+  int joint_count = 0, state_count = 0, marker_count = 0, wrench_count = 0;
+  bool non_finite = false;
+
+  void check(double v) { non_finite = non_finite || !std::isfinite(v); }
+};
+
+Outputs* outputs = nullptr;
+
+void onJoints(const sensor_msgs::JointState& m) {
+  for (double v : m.position) outputs->check(v);
+  for (double v : m.velocity) outputs->check(v);
+  for (double v : m.effort) outputs->check(v);
+  outputs->joints = m;
+  ++outputs->joint_count;
+}
+
+void onState(const cable_msgs::CableState& m) {
+  for (double v : m.tension) outputs->check(v);
+  for (double v : {m.top_tension, m.load_force.x, m.load_force.y, m.load_force.z, m.base_force.x, m.base_force.y,
+                   m.base_force.z, m.kinetic_energy, m.potential_energy, m.elastic_energy, m.dissipated_energy}) {
+    outputs->check(v);
+  }
+  outputs->state = m;
+  ++outputs->state_count;
+}
+
+void onMarkers(const visualization_msgs::MarkerArray& m) {
+  for (const auto& marker : m.markers) {
+    for (const auto& p : marker.points) outputs->check(p.x + p.y + p.z);
+    outputs->check(marker.pose.position.x + marker.pose.position.y + marker.pose.position.z);
+  }
+  outputs->markers = m;
+  ++outputs->marker_count;
+}
+
+void onWrench(const geometry_msgs::WrenchStamped& m) {
+  outputs->check(m.wrench.force.x + m.wrench.force.y + m.wrench.force.z);
+  outputs->wrench = m;
+  ++outputs->wrench_count;
+}
+
+/// Spins until `done` or `seconds` of wall time pass.
+bool waitFor(const std::function<bool()>& done, double seconds) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (ros::ok() && ros::WallTime::now() < end) {
+    ros::spinOnce();
+    if (done()) return true;
+    ros::WallDuration(0.01).sleep();
+  }
+  return done();
+}
+
+/// Spins for `seconds`, calling `each` every 50 ms (to keep publishing an input).
+void spinFor(double seconds, const std::function<void()>& each = [] {}) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (ros::ok() && ros::WallTime::now() < end) {
+    each();
+    ros::spinOnce();
+    ros::WallDuration(0.05).sleep();
+  }
+}
+
+/// The load's position in the world frame (z up) from the markers (paper frame: x, -y, -z).
+Eigen::Vector3d loadWorld() {
+  const auto& p = outputs->markers.markers.at(0).points.back();
+  return {p.x, -p.y, -p.z};
+}
+
+class CableNodeTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    outputs = new Outputs;
+    nh = new ros::NodeHandle;
+    subscribers = new std::vector<ros::Subscriber>{
+        nh->subscribe("joint_states", 10, onJoints), nh->subscribe("cable_state", 10, onState),
+        nh->subscribe("cable_markers", 10, onMarkers), nh->subscribe("rov_wrench", 10, onWrench)};
+    rov = new ros::Publisher(nh->advertise<geometry_msgs::PoseStamped>("rov_pose", 10));
+    current = new ros::Publisher(nh->advertise<geometry_msgs::TwistStamped>("current", 10));
+    ASSERT_TRUE(waitFor([] { return outputs->joint_count > 5 && outputs->marker_count > 5 && outputs->wrench_count > 5; }, 30.0))
+        << "the node published nothing within 30 s";
+  }
+
+  static geometry_msgs::PoseStamped pose(const Eigen::Vector3d& world, ros::Time stamp) {
+    geometry_msgs::PoseStamped p;
+    p.header.stamp = stamp;
+    p.header.frame_id = "world";
+    p.pose.position.x = world.x();
+    p.pose.position.y = world.y();
+    p.pose.position.z = world.z();
+    p.pose.orientation.w = 1.0;
+    return p;
+  }
+
+  static ros::NodeHandle* nh;
+  static std::vector<ros::Subscriber>* subscribers;
+  static ros::Publisher *rov, *current;
+};
+
+ros::NodeHandle* CableNodeTest::nh = nullptr;
+std::vector<ros::Subscriber>* CableNodeTest::subscribers = nullptr;
+ros::Publisher* CableNodeTest::rov = nullptr;
+ros::Publisher* CableNodeTest::current = nullptr;
+
+TEST_F(CableNodeTest, JointStateHasEveryNamedJoint) {
+  const sensor_msgs::JointState& j = outputs->joints;
+  ASSERT_EQ(j.name.size(), 3u * kLinks);
+  EXPECT_EQ(j.position.size(), 3u * kLinks);
+  EXPECT_EQ(j.velocity.size(), 3u * kLinks);
+  EXPECT_EQ(j.effort.size(), 3u * kLinks);
+  EXPECT_EQ(j.name[0], kPrefix + "joint_1_elevation");
+  EXPECT_EQ(j.name[4], kPrefix + "joint_2_azimuth");
+  EXPECT_EQ(j.name.back(), kPrefix + "joint_6_torsion");
+}
+
+TEST_F(CableNodeTest, EveryTfFrameResolves) {
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  std::vector<std::string> frames = {kPrefix + "cable_paper", kPrefix + "cable_load"};
+  for (int k = 1; k <= kLinks; ++k) {
+    for (const std::string suffix : {"", "_azimuth", "_elevation"}) frames.push_back(kPrefix + "link_" + std::to_string(k) + suffix);
+  }
+  for (const auto& frame : frames) {
+    std::string error;
+    EXPECT_TRUE(waitFor([&] { return buffer.canTransform("world", frame, ros::Time(0), &error); }, 10.0))
+        << frame << ": " << error;
+  }
+  // The last link's frame sits one link length above the load, along its z axis.
+  const auto link = buffer.lookupTransform("world", kPrefix + "link_" + std::to_string(kLinks), ros::Time(0));
+  const auto load = buffer.lookupTransform("world", kPrefix + "cable_load", ros::Time(0));
+  const double dx = load.transform.translation.x - link.transform.translation.x;
+  const double dy = load.transform.translation.y - link.transform.translation.y;
+  const double dz = load.transform.translation.z - link.transform.translation.z;
+  EXPECT_NEAR(std::sqrt(dx * dx + dy * dy + dz * dz), kLength / kLinks, 0.05);
+}
+
+TEST_F(CableNodeTest, MarkerArrayIsComplete) {
+  const auto& m = outputs->markers.markers;
+  ASSERT_EQ(m.size(), 5u);
+  EXPECT_EQ(m[0].ns, "cable");
+  EXPECT_EQ(m[0].type, visualization_msgs::Marker::LINE_STRIP);
+  EXPECT_EQ(m[0].points.size(), kLinks + 1u);
+  EXPECT_EQ(m[0].colors.size(), kLinks + 1u);
+  EXPECT_EQ(m[1].ns, "load");
+  EXPECT_EQ(m[2].ns, "base_force");
+  EXPECT_EQ(m[3].ns, "load_force");
+  EXPECT_EQ(m[2].points.size(), 2u);
+  EXPECT_EQ(m[4].ns, "tension_scale");
+  EXPECT_NE(m[4].text.find("tension"), std::string::npos);
+  EXPECT_EQ(m[0].header.frame_id, kPrefix + "cable_paper");
+}
+
+TEST_F(CableNodeTest, CableDriftsDownstreamInACurrent) {
+  const auto middle_x = [] { return outputs->markers.markers.at(0).points.at(kLinks / 2).x; };
+  const double before = middle_x();
+  geometry_msgs::TwistStamped flow;
+  flow.header.frame_id = "world";
+  flow.twist.linear.x = 1.5;  // world +x
+  spinFor(5.0, [&] {
+    flow.header.stamp = ros::Time::now();
+    current->publish(flow);
+  });
+  EXPECT_GT(middle_x(), before + 0.3) << "the cable's middle did not move downstream (+x)";
+  flow.twist.linear.x = 0.0;
+  flow.header.stamp = ros::Time::now();
+  current->publish(flow);
+  spinFor(0.5);
+}
+
+TEST_F(CableNodeTest, WrenchFollowsTheRovMovingAway) {
+  // The ROV starts where the load hangs and moves 4 m sideways (world +y) over 4 s: the cable pulls it back.
+  const Eigen::Vector3d start = loadWorld();
+  const double force_before = std::hypot(outputs->wrench.wrench.force.x, outputs->wrench.wrench.force.y);
+  const ros::WallTime t0 = ros::WallTime::now();
+  spinFor(6.0, [&] {
+    const double s = std::min((ros::WallTime::now() - t0).toSec() / 4.0, 1.0);
+    rov->publish(pose(start + Eigen::Vector3d(0.0, 4.0 * s, 0.0), ros::Time::now()));
+  });
+  EXPECT_GT(loadWorld().y(), start.y() + 2.0) << "the load did not follow the ROV";
+  EXPECT_LT(outputs->wrench.wrench.force.y, 0.0) << "the cable should pull the ROV back towards the base";
+  EXPECT_GT(std::hypot(outputs->wrench.wrench.force.x, outputs->wrench.wrench.force.y), force_before);
+}
+
+TEST_F(CableNodeTest, NanAndStalePosesChangeNothing) {
+  // Hold the ROV where it is, then send a NaN pose and a stale pose far away: both rejected and counted.
+  const Eigen::Vector3d here = loadWorld();
+  spinFor(1.0, [&] { rov->publish(pose(here, ros::Time::now())); });
+  const unsigned rejected = outputs->state.rejected_inputs, stale = outputs->state.stale_inputs;
+  const Eigen::Vector3d before = loadWorld();
+  geometry_msgs::PoseStamped bad = pose(here, ros::Time::now());
+  bad.pose.position.x = std::nan("");
+  rov->publish(bad);
+  rov->publish(pose(here + Eigen::Vector3d(30.0, 0.0, 0.0), ros::Time::now() - ros::Duration(10.0)));
+  spinFor(2.0);
+  EXPECT_EQ(outputs->state.rejected_inputs, rejected + 1);
+  EXPECT_EQ(outputs->state.stale_inputs, stale + 1);
+  EXPECT_LT((loadWorld() - before).norm(), 0.2) << "a rejected pose moved the load";
+  // A non-finite current is rejected too.
+  geometry_msgs::TwistStamped flow;
+  flow.header.stamp = ros::Time::now();
+  flow.twist.linear.y = std::numeric_limits<double>::infinity();
+  current->publish(flow);
+  spinFor(1.0);
+  EXPECT_EQ(outputs->state.rejected_inputs, rejected + 2);
+}
+
+TEST_F(CableNodeTest, NoPublishedNumberIsNonFinite) {
+  EXPECT_FALSE(outputs->non_finite);
+  EXPECT_EQ(outputs->state.diverged_steps, 0u);
+  EXPECT_GT(outputs->state.real_time_factor, 0.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_cable_node");
+  return RUN_ALL_TESTS();
+}
