@@ -14,7 +14,7 @@ def main():
     frame = rospy.get_param("~world_frame", "world")
     depth = float(rospy.get_param("~depth", 50.0))
     radius = float(rospy.get_param("~radius", 8.0))
-    period = float(rospy.get_param("~period", 60.0))
+    period = float(rospy.get_param("~period", 120.0))
     rate = rospy.Rate(float(rospy.get_param("~rate", 20.0)))
     pose_pub = rospy.Publisher("rov_pose", PoseStamped, queue_size=10)
     current_pub = rospy.Publisher("current", TwistStamped, queue_size=10)

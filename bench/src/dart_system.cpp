@@ -77,7 +77,14 @@ class DartSystem : public System {
   double energy() override {
     skeleton_->setPositions(q_);
     skeleton_->setVelocities(v_);
-    return skeleton_->computeKineticEnergy() + skeleton_->computePotentialEnergy();
+    // Potential energy summed here: DART 6's BodyNode::computePotentialEnergy() takes the body frame's
+    // origin instead of the centre of mass (dartsim/dart#1681, fixed after 6.12).
+    double potential = 0.0;
+    for (std::size_t i = 0; i < skeleton_->getNumBodyNodes(); ++i) {
+      const BodyNode* body = skeleton_->getBodyNode(i);
+      potential -= body->getMass() * skeleton_->getGravity().dot(body->getCOM());
+    }
+    return skeleton_->computeKineticEnergy() + potential;
   }
 
   Eigen::Vector3d tip() override {

@@ -62,6 +62,7 @@ struct Column {
 /// What one column measured at one n.
 struct Cell {
   bool skipped = true;
+  bool over_budget = false;     ///< skipped for time: larger n are skipped too
   std::string why;              ///< reason of a skip or a failure
   long ops = 0;                 ///< steps (or derivative calls) per repetition
   std::vector<double> per_op;   ///< seconds per op, one per repetition
@@ -214,24 +215,29 @@ int main(int argc, char** argv) {
       }
     }
 
-    // Calibration: warm up and measure the time per op on a few ops; decide the count per repetition.
+    // Calibration: warm up and measure the time per op on a few ops, then choose the ops per
+    // repetition: >= target seconds each, and the whole cell (warm-up + all repetitions) <= budget.
+    const int reps = options.repetitions;
     for (std::size_t c = 0; c < columns.size(); ++c) {
       Cell& cell = cells[c];
       if (!systems[c]) continue;
-      // A column that was already slow at the previous size is not even probed when the cubic
-      // extrapolation (the worst scaling here) says one op would blow the budget many times over.
+      const char* op = columns[c].is_derivative ? "call" : "step";
+      if (previous_n > 0 && results[previous_n][c].over_budget) {
+        cell.over_budget = true;
+        cell.why = "over the cell budget at n = " + std::to_string(previous_n) + " already";
+        continue;
+      }
+      // Not even probed when the cubic extrapolation of the time measured at the previous size (cubic:
+      // the worst scaling of any system here) says that a single op would exceed the cell's budget.
       if (previous_n > 0 && previous_time[c] > 0.0) {
         const double predicted = previous_time[c] * std::pow(static_cast<double>(n) / previous_n, 3.0);
-        if (predicted > 3.0 * options.budget) {
-          cell.why = "predicted " + fixed(predicted, 0) + " s per op from n = " + std::to_string(previous_n) +
-                     " (cubic), over the budget: not probed";
+        if (predicted > options.budget) {
+          cell.over_budget = true;
+          cell.why = "one " + std::string(op) + " predicted at " + fixed(predicted, 0) + " s (cubic from " +
+                     fixed(previous_time[c], 3) + " s at n = " + std::to_string(previous_n) + ") > the " +
+                     fixed(options.budget, 0) + " s cell budget: not probed";
           continue;
         }
-      }
-      if (previous_n > 0 && previous_time[c] == 0.0 && !results[previous_n][c].why.empty() &&
-          results[previous_n][c].why.find("over the budget") != std::string::npos) {
-        cell.why = "over the budget at a smaller n";
-        continue;
       }
       try {
         systems[c]->reset();
@@ -243,15 +249,17 @@ int main(int argc, char** argv) {
           const double t = seconds(t0, Clock::now());
           spent += t;
           per_op = t / batch;
-          if (spent >= 0.05 || per_op * batch * 2 > options.budget) break;
+          if (spent >= 0.05 || per_op * batch * 2 > options.budget / (reps + 1)) break;
           batch *= 2;
         }
-        if (per_op > options.budget) {
-          cell.why = "one op took " + fixed(per_op, 1) + " s, over the budget of " + fixed(options.budget, 0) + " s";
+        if ((reps + 1) * per_op > options.budget) {
+          cell.over_budget = true;
+          cell.why = "one " + std::string(op) + " took " + fixed(per_op, 2) + " s: warm-up + " + std::to_string(reps) +
+                     " repetitions of one " + op + " would exceed the " + fixed(options.budget, 0) + " s cell budget";
           continue;
         }
         const long wanted = static_cast<long>(std::ceil(options.target / per_op));
-        const long allowed = std::max(1L, static_cast<long>(std::floor(options.budget / per_op)));
+        const long allowed = static_cast<long>(std::floor((options.budget - spent) / (reps * per_op)));
         cell.ops = std::max(1L, std::min(wanted, allowed));
         cell.skipped = false;
       } catch (const std::exception& e) {
@@ -361,11 +369,13 @@ int main(int argc, char** argv) {
       std::printf("  n=%d: %s", n, cs.skipped || cd.skipped ? "-" : fixed(cs.median() / cd.median(), 2).c_str());
     }
     std::printf("\n");
-    const bool both = results.count(100) && results.count(1000) && !results[100][p].skipped && !results[1000][p].skipped;
-    std::printf("  %-12s  time(n=1000) / time(n=100) = %s", "",
-                both ? fixed(results[1000][p].median() / results[100][p].median(), 1).c_str() : "- (not both measured)");
-    std::printf("   (O(n): 10, O(n^2): 100, O(n^3): 1000)\n");
+    for (const std::size_t c : {p, d}) {
+      const bool both = results.count(100) && results.count(1000) && !results[100][c].skipped && !results[1000][c].skipped;
+      std::printf("  %-12s  %s time(n=1000) / time(n=100) = %s\n", "", c == p ? "step:        " : "derivative():",
+                  both ? fixed(results[1000][c].median() / results[100][c].median(), 1).c_str() : "- (not both measured)");
+    }
   }
+  std::printf("  (time(n=1000) / time(n=100) is 10 for O(n), 100 for O(n^2), 1000 for O(n^3))\n");
 
   std::printf("\n4) Correctness: largest |E_end - E_start| / releasable energy over the repetitions (must be < 1e-3)\n"
               "   and simulated time per repetition [s] / step-time spread (max - min) / median over repetitions\n");

@@ -148,7 +148,7 @@ void CableNode::prepareMessages() {
 
   state_msg_.tension.assign(n, 0.0);
   state_msg_.header.frame_id = options_.world_frame;
-  wrench_msg_.header.frame_id = options_.world_frame;
+  wrench_msg_.header.frame_id = names_.load();  // at the ROV, axes parallel to the world frame's
 }
 
 bool CableNode::fresh(const ros::Time& stamp, const char* topic) {
@@ -347,7 +347,8 @@ void CableNode::publish(const ros::Time& stamp, double step_seconds) {
     setPose(transforms_[2 + 3 * k].transform, after_z_[k].position, after_z_[k].orientation);
     setPose(transforms_[3 + 3 * k].transform, after_x_[k].position, after_x_[k].orientation);
   }
-  setPose(transforms_.back().transform, c.ends.col(n), link_poses_[n - 1].orientation);
+  // The load frame is aligned with the world frame (only translated), so the wrench reads in world axes.
+  setPose(transforms_.back().transform, c.ends.col(n), kPaperInWorld.conjugate());
   for (auto& t : transforms_) t.header.stamp = stamp;
   tf_broadcaster_.sendTransform(transforms_);
 
@@ -378,8 +379,8 @@ void CableNode::publish(const ros::Time& stamp, double step_seconds) {
   std::snprintf(text, sizeof(text), "tension: blue 0 N, green %.0f N, red %.0f N  (top %.1f N)", 0.5 * scale, scale,
                 c.tension(0));
   marker_msg_.markers[4].text = text;
-  marker_msg_.markers[4].pose.position.x = c.ends(0, 0);
-  marker_msg_.markers[4].pose.position.z = c.ends(2, 0) - 0.05 * params_.totalLength();
+  marker_msg_.markers[4].pose.position.x = c.ends(0, 0) - 0.3 * params_.totalLength();
+  marker_msg_.markers[4].pose.position.z = c.ends(2, 0) + 0.1 * params_.totalLength();
   for (auto& m : marker_msg_.markers) m.header.stamp = stamp;
   marker_pub_.publish(marker_msg_);
 
