@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Installs what it needs, builds, and runs the main job: for now the model generator on the default
-# config (prints M, h, G, K, D as JSON). Arguments are passed to cable_model, e.g.
-#   scripts/run.sh --set cable.links=4 --random-state 1
+# Installs what it needs, builds, and runs the main job: the demo umbilical (a fake ROV on a 50 m
+# cable in a varying current) with roslaunch, and rviz where there is a display. Arguments go to
+# roslaunch, e.g. `scripts/run.sh rviz:=false`. Stop with Ctrl-C.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 install_debian_packages
 build_workspace >&2
 source_devel_space
-exec "$WS_DIR/devel/lib/cable_dynamics/cable_model" --config "$REPO_DIR/config/default.yaml" "$@"
+rviz=false
+[ -n "${DISPLAY:-}" ] && rviz=true
+exec roslaunch cable_dynamics demo.launch rviz:="$rviz" "$@"
