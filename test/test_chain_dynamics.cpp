@@ -68,8 +68,11 @@ Eigen::VectorXd omegaRateFromPaper(const Eigen::VectorXd& q, const Eigen::Vector
 }
 
 void expectSameAccelerations(const CableParams& params, unsigned seed) {
+  for (bool recursive : {false, true}) {
+    SCOPED_TRACE(recursive ? "recursive formulation" : "dense (paper) formulation");
   const int n = params.links;
   ChainDynamics chain(params);
+  chain.setRecursive(recursive);
   Eigen::VectorXd q, qd;
   randomState(n, seed, q, qd);
   Eigen::VectorXd x;
@@ -91,6 +94,7 @@ void expectSameAccelerations(const CableParams& params, unsigned seed) {
     EXPECT_NEAR(std::remainder(q2(i) - q(i), 2 * M_PI), 0.0, 1e-12) << coordinateName(i);
     EXPECT_NEAR(qd2(i), qd(i), 1e-12) << coordinateName(i);
   }
+  }
 }
 
 }  // namespace
@@ -110,6 +114,36 @@ TEST(ChainDynamics, AgreesWithPaperModelWithPaperSpringsAndDampers) {
 TEST(ChainDynamics, AgreesWithPaperModelWithBendingSprings) {
   const CableParams p = makeParams(4, {"cable.stiffness={model: bending, elevation: 3.0, torsion: 0.5}"});
   for (unsigned seed = 1; seed <= 4; ++seed) expectSameAccelerations(p, seed);
+}
+
+TEST(ChainDynamics, RecursiveAndDenseFormulationsAgreeWithEveryForce) {
+  // Fluid drag in a sheared current, added mass, a moving base, springs, dampers and the load coupling.
+  const CableParams p = makeParams(7, {"fluid.density=1025", "fluid.current=[0, 0, 0]",
+                                       "fluid.current_profile=[[0, 1.2, -0.3, 0.1], [6, 0.4, 0.2, 0]]",
+                                       "load={mass: 3.0, volume: 0.001, mode: attached, drag_area: 0.2, added_mass: 1.5}",
+                                       "cable.stiffness={model: bending, elevation: 2.0, torsion: 0.3}",
+                                       "cable.damping={elevation: 0.2, torsion: 0.05}"});
+  ChainDynamics dense(p), recursive(p);
+  dense.setRecursive(false);
+  recursive.setRecursive(true);
+  EndInputs ends;
+  ends.base_position = Eigen::Vector3d(0.1, -0.2, 0.05);
+  ends.base_velocity = Eigen::Vector3d(0.3, 0.1, -0.2);
+  ends.base_acceleration = Eigen::Vector3d(-0.5, 0.8, 1.1);
+  ends.load_coupled = true;
+  ends.target_position = Eigen::Vector3d(2.0, 1.0, 4.0);
+  ends.target_velocity = Eigen::Vector3d(0.2, 0.0, 0.1);
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    Eigen::VectorXd q, qd, x;
+    randomState(7, seed, q, qd);
+    dense.stateFromPaper(q, qd, x);
+    ChainOutputs a, b;
+    ASSERT_TRUE(dense.evaluate(x, ends, a));
+    ASSERT_TRUE(recursive.evaluate(x, ends, b));
+    const double scale = a.omega_rate.cwiseAbs().maxCoeff();
+    EXPECT_LT((a.omega_rate - b.omega_rate).cwiseAbs().maxCoeff(), 1e-9 * scale) << "seed " << seed;
+    EXPECT_LT((a.tension - b.tension).cwiseAbs().maxCoeff(), 1e-9 * a.tension.cwiseAbs().maxCoeff()) << "seed " << seed;
+  }
 }
 
 TEST(ChainDynamics, HangingCableCarriesTheWeightBelow) {

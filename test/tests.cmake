@@ -68,3 +68,15 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURC
 # The cable URDF parses back with urdfdom.
 catkin_add_gtest(test_cable_urdf test/test_cable_urdf.cpp)
 target_link_libraries(test_cable_urdf cable_dynamics_urdf ${GTEST_MAIN_LIBRARIES})
+
+# No heap allocation in a step: the core compiled again with EIGEN_RUNTIME_NO_MALLOC, for this test only.
+file(GLOB CABLE_CORE_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/cable_dynamics/src/*.cpp)
+list(FILTER CABLE_CORE_SOURCES EXCLUDE REGEX "(_app|model_report|cli_options|csv_output|cable_urdf)\\.cpp$")
+add_library(cable_dynamics_core_nomalloc STATIC ${CABLE_CORE_SOURCES})
+target_compile_definitions(cable_dynamics_core_nomalloc PUBLIC EIGEN_RUNTIME_NO_MALLOC)
+# Eigen checks the guard with eigen_assert: keep assertions on (no NDEBUG) in this library and test.
+target_compile_options(cable_dynamics_core_nomalloc PUBLIC -UNDEBUG)
+target_include_directories(cable_dynamics_core_nomalloc PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/cable_dynamics/include ${EIGEN3_INCLUDE_DIR})
+target_link_libraries(cable_dynamics_core_nomalloc PUBLIC yaml-cpp)
+catkin_add_gtest(test_no_allocation test/test_no_allocation.cpp)
+target_link_libraries(test_no_allocation cable_dynamics_core_nomalloc ${GTEST_MAIN_LIBRARIES})

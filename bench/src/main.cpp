@@ -187,7 +187,11 @@ int main(int argc, char** argv) {
     cells.assign(columns.size(), Cell());
     // Build every system (not timed). The spec comes from the project: link properties and initial axes.
     std::map<std::string, std::unique_ptr<ProjectSystem>> project;
-    for (const auto& f : formulations) project[f] = std::make_unique<ProjectSystem>(n, f);
+    for (const auto& f : formulations) {
+      const Clock::time_point t0 = Clock::now();
+      project[f] = std::make_unique<ProjectSystem>(n, f);
+      std::fprintf(stderr, "[bench] n = %d: %s built in %.1f s\n", n, projectName(f).c_str(), seconds(t0, Clock::now()));
+    }
     const ProjectSystem& reference = *project[formulations.front()];
     const ChainSpec spec = makeSpec(reference.params(), reference.initialAxes());
     releasable[n] = spec.releasableEnergy();
@@ -206,7 +210,9 @@ int main(int argc, char** argv) {
       const Engine& engine = *std::find_if(engine_list.begin(), engine_list.end(),
                                            [&](const Engine& e) { return e.name == col.name; });
       try {
+        const Clock::time_point t0 = Clock::now();
         engine_systems.push_back(engine.make(spec));
+        std::fprintf(stderr, "[bench] n = %d: %s built in %.1f s\n", n, col.name.c_str(), seconds(t0, Clock::now()));
         System* s = engine_systems.back().get();
         systems[c] = s;
         ops[c] = [s] { s->step(); };
@@ -252,6 +258,7 @@ int main(int argc, char** argv) {
           if (spent >= 0.05 || per_op * batch * 2 > options.budget / (reps + 1)) break;
           batch *= 2;
         }
+        std::fprintf(stderr, "[bench] n = %d: %s probed, %.3g s per %s\n", n, columns[c].name.c_str(), per_op, op);
         if ((reps + 1) * per_op > options.budget) {
           cell.over_budget = true;
           cell.why = "one " + std::string(op) + " took " + fixed(per_op, 2) + " s: warm-up + " + std::to_string(reps) +

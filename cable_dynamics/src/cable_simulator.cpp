@@ -190,7 +190,7 @@ StepReport CableSimulator::step() {
       Eigen::VectorXd& psi = k4_;  // scratch: absolute azimuths from the relative ones
       double sum = 0.0;
       for (int k = 0; k < links(); ++k) psi(k) = (sum += q_(3 * k + 1));
-      dynamics_.setAzimuthReference(psi.head(links()));
+      dynamics_.setAzimuthReference(psi.head(links()));  // a Ref: no copy, no allocation
       return report;
     }
     x_ = x_start_;

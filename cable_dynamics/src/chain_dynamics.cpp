@@ -76,6 +76,14 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   for (Eigen::MatrixXd* m : {&jacobian_velocity_, &jacobian_rotation_, &system_}) m->setZero(3 * n, 3 * n);
   for (Eigen::VectorXd* v : {&force_plus_, &force_minus_, &velocity_, &step_rhs_, &delta_}) v->setZero(3 * n);
   perturbed_.setZero(StateLayout::size(n));
+  recursive_ = params.simulation.formulation == "recursive";
+  articulated_.assign(n, Eigen::Matrix<double, 6, 6>::Zero());
+  articulated_bias_.assign(n, Eigen::Matrix<double, 6, 1>::Zero());
+  joint_u_.assign(n, Eigen::Matrix<double, 6, 3>::Zero());
+  joint_d_inverse_.assign(n, Eigen::Matrix3d::Zero());
+  joint_rhs_.setZero(3, n);
+  paper_q_.setZero(3 * n);
+  paper_qd_.setZero(3 * n);
   lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(3 * n);
   rhs_.setZero(3 * n);
   llt_ = Eigen::LLT<Eigen::MatrixXd>(3 * n);
@@ -144,13 +152,96 @@ void ChainDynamics::externalForces(const EndInputs& ends) {
   }
 }
 
-void ChainDynamics::assembleForces() {
-  const int n = n_;
+void ChainDynamics::inertiaTensors() {
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < n_; ++k) {
     const Eigen::Vector3d axis = u_.col(k);
     tensor_[k] = mass_per_length_(k) * identity + added_per_length_(k) * (identity - axis * axis.transpose());
   }
+}
+
+void ChainDynamics::solveRecursive() {
+  // Articulated-body recursion (Featherstone) for a chain of links on spherical joints. Every quantity
+  // sits at a link's base end with axes parallel to the paper frame; spatial vectors are [linear; angular].
+  // The joint springs and dampers enter as external torques, so every joint is free (its torque is 0).
+  using Matrix6d = Eigen::Matrix<double, 6, 6>;
+  using Vector6d = Eigen::Matrix<double, 6, 1>;
+  const int n = n_;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  for (int k = 0; k < n; ++k) {
+    const double l = props_.length(k);
+    const Eigen::Vector3d axis = u_.col(k), omega = omega_.col(k), beta = beta_.col(k);
+    const Eigen::Matrix3d ux = skew(axis), a = tensor_[k];
+    const Eigen::Matrix3d rotation = thick_transverse_(k) * (identity - axis * axis.transpose()) +
+                                     props_.inertia_polar(k) * axis * axis.transpose();
+    // Inertia of the link about its base end: the translation integral of A over the length, plus the
+    // thickness rotation; its velocity terms (centripetal beta, gyroscopic) minus the external wrench.
+    Matrix6d& inertia = articulated_[k];
+    inertia.topLeftCorner<3, 3>() = l * a;
+    inertia.topRightCorner<3, 3>() = -(0.5 * l * l) * a * ux;
+    inertia.bottomLeftCorner<3, 3>() = (0.5 * l * l) * ux * a;
+    inertia.bottomRightCorner<3, 3>() = -(l * l * l / 3.0) * ux * a * ux + rotation;
+    Vector6d& bias = articulated_bias_[k];
+    bias.head<3>() = (0.5 * l * l) * a * beta - force_.col(k);
+    bias.tail<3>() = (l * l * l / 3.0) * ux * (a * beta) + omega.cross(rotation * omega) - axis.cross(moment_.col(k)) -
+                     torque_.col(k);
+    if (k == n - 1) {  // the load: a point mass at the far end
+      const Eigen::Vector3d r = l * axis;
+      const Eigen::Matrix3d rx = skew(r);
+      const double m = load_inertia_;
+      inertia.topLeftCorner<3, 3>() += m * identity;
+      inertia.topRightCorner<3, 3>() -= m * rx;
+      inertia.bottomLeftCorner<3, 3>() += m * rx;
+      inertia.bottomRightCorner<3, 3>() -= m * rx * rx;
+      const Eigen::Vector3d load_bias = m * l * beta - load_external_;
+      bias.head<3>() += load_bias;
+      bias.tail<3>() += r.cross(load_bias);
+    }
+  }
+  // Backward: fold each link's articulated inertia into its parent through the free spherical joint.
+  for (int k = n - 1; k >= 0; --k) {
+    const Matrix6d& ia = articulated_[k];
+    joint_u_[k] = ia.rightCols<3>();
+    joint_d_inverse_[k] = ia.bottomRightCorner<3, 3>().inverse();
+    joint_rhs_.col(k) = -articulated_bias_[k].tail<3>();
+    if (k == 0) break;
+    // What link k passes to its parent through the free spherical joint has no angular part (I^a S = 0):
+    // only an effective mass M and force f at joint k. Writing that structure out, rather than forming
+    // I^A - U D^-1 U^T in full, keeps the tiny polar inertia free of round-off from the large blocks.
+    const Eigen::Matrix3d coupling = joint_u_[k].topRows<3>();
+    const Eigen::Matrix3d mass = ia.topLeftCorner<3, 3>() - coupling * joint_d_inverse_[k] * coupling.transpose();
+    const double l = props_.length(k - 1);
+    const Eigen::Vector3d force = articulated_bias_[k].head<3>() + mass * (l * beta_.col(k - 1)) +
+                                  coupling * (joint_d_inverse_[k] * joint_rhs_.col(k));
+    // Shift from joint k to joint k-1 (r = l u_{k-1}): [M, -M [r]x; [r]x M, -[r]x M [r]x] and [f; r x f].
+    const Eigen::Matrix3d rx = skew(l * u_.col(k - 1));
+    const Eigen::Matrix3d mass_rx = mass * rx;
+    articulated_[k - 1].topLeftCorner<3, 3>() += mass;
+    articulated_[k - 1].topRightCorner<3, 3>() -= mass_rx;
+    articulated_[k - 1].bottomLeftCorner<3, 3>() -= mass_rx.transpose();  // [r]x M = -(M [r]x)^T
+    articulated_[k - 1].bottomRightCorner<3, 3>() -= rx * mass_rx;
+    articulated_bias_[k - 1].head<3>() += force;
+    articulated_bias_[k - 1].tail<3>() += (l * u_.col(k - 1)).cross(force);
+  }
+  // Forward: accelerations from the base outwards.
+  Vector6d motion;
+  motion << known_acc_.col(0), Eigen::Vector3d::Zero();  // the base translates without turning
+  for (int k = 0; k < n; ++k) {
+    if (k > 0) {
+      const double l = props_.length(k - 1);
+      const Eigen::Vector3d alpha = motion.tail<3>();
+      motion.head<3>() += alpha.cross(l * u_.col(k - 1)) + l * beta_.col(k - 1);
+    }
+    const Eigen::Vector3d joint_acc = joint_d_inverse_[k] * (joint_rhs_.col(k) - joint_u_[k].transpose() * motion);
+    motion.tail<3>() += joint_acc;
+    rhs_.segment<3>(3 * k) = motion.tail<3>();
+  }
+}
+
+void ChainDynamics::assembleForces() {
+  const int n = n_;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  inertiaTensors();
   // Outboard inertia B_k = sum_{j>k} l_j A_j + load, and the known-acceleration (bias) integrals.
   Eigen::Matrix3d outboard = load_inertia_ * identity;
   Eigen::Vector3d outboard_force = load_external_ - load_inertia_ * tip_known_acc_;
@@ -228,11 +319,16 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends) {
   kinematics(x, ends);
   externalForces(ends);
   computeJointTorques(x);
-  assembleForces();
-  assembleMass();
-  llt_.compute(mass_matrix_);
-  if (llt_.info() != Eigen::Success) return false;
-  llt_.solveInPlace(rhs_);  // rhs_ now holds the angular accelerations
+  if (recursive_) {
+    inertiaTensors();
+    solveRecursive();  // rhs_ holds the angular accelerations
+  } else {
+    assembleForces();
+    assembleMass();
+    llt_.compute(mass_matrix_);
+    if (llt_.info() != Eigen::Success) return false;
+    llt_.solveInPlace(rhs_);  // rhs_ now holds the angular accelerations
+  }
   if (!rhs_.allFinite()) return false;
   jointForces();
   input_power_ = joint_force_.col(0).dot(ends.base_velocity) + coupling_.dot(tip_vel_);
@@ -526,12 +622,12 @@ void ChainDynamics::bendingSpringTorques(const Eigen::VectorXd& x) {
   }
 }
 
-double ChainDynamics::elasticEnergy(const Eigen::VectorXd& x) const {
+double ChainDynamics::elasticEnergy(const Eigen::VectorXd& x) {
   double energy = 0.0;
   const LinkProperties& p = props_;
   if (stiffness_model_ == StiffnessModel::kPaper) {
-    Eigen::VectorXd q(3 * n_), qd(3 * n_);  // off the hot path: evaluate() only
-    paperCoordinates(x, q, qd);
+    Eigen::VectorXd& q = paper_q_;
+    paperCoordinates(x, q, paper_qd_);
     for (int k = 0; k < n_; ++k) {
       energy += 0.5 * (p.stiffness_elevation(k) * q(3 * k) * q(3 * k) + p.stiffness_azimuth(k) * q(3 * k + 1) * q(3 * k + 1) +
                        p.stiffness_torsion(k) * q(3 * k + 2) * q(3 * k + 2));

@@ -326,6 +326,7 @@ CableParams parseConfig(const YAML::Node& root) {
   p.simulation.dt = simulation.number("dt", 0.001, 0.0, 0.1, true, "s");
   p.simulation.integrator = simulation.choice("integrator", "rk4", {"rk4", "semi_implicit"});
   p.simulation.duration = simulation.number("duration", 10.0, 0.0, 1e7, true, "s");
+  p.simulation.formulation = simulation.choice("formulation", "recursive", {"paper", "recursive"});
   simulation.rejectUnknownKeys();
   top.rejectUnknownKeys();
   return p;

@@ -92,7 +92,10 @@ struct InitialState {
 /// Time stepping.
 struct SimulationParams {
   double dt = 0.001;               ///< [s]
-  std::string integrator = "rk4";  ///< rk4
+  std::string integrator = "rk4";  ///< rk4 | semi_implicit
+  /// recursive: O(n) articulated-body recursion; paper: the dense 3n x 3n mass matrix generated element
+  /// by element as in the paper, solved by Cholesky (O(n^3)). Same physics.
+  std::string formulation = "recursive";
   double duration = 10.0;          ///< default length of an offline run (cable_sim without --duration) [s]
 };
 

@@ -72,7 +72,11 @@ class ChainDynamics {
 
   /// Sets the paper azimuths (n) [rad] near which the paper springs read psi_k (kept continuous
   /// by the simulator between steps; only the paper stiffness model uses them).
-  void setAzimuthReference(const Eigen::VectorXd& psi) { psi_reference_ = psi; }
+  void setAzimuthReference(const Eigen::Ref<const Eigen::VectorXd>& psi) { psi_reference_ = psi; }
+
+  /// true: O(n) articulated-body recursion; false: dense mass matrix and Cholesky (O(n^3)).
+  bool recursive() const { return recursive_; }
+  void setRecursive(bool recursive) { recursive_ = recursive; }
 
   /// x' at state x (size stateSize()). Returns false when the state is not finite or the mass matrix
   /// is not positive definite; xdot is then unspecified.
@@ -106,6 +110,8 @@ class ChainDynamics {
   bool solve(const Eigen::VectorXd& x, const EndInputs& ends);
   void kinematics(const Eigen::VectorXd& x, const EndInputs& ends);
   void externalForces(const EndInputs& ends);
+  void inertiaTensors();  ///< A_k per link (O(n))
+  void solveRecursive();  ///< angular accelerations into rhs_ by the articulated-body recursion (O(n))
   void assembleForces();  ///< tensors, outboard sums and the right-hand side rhs_ (O(n))
   void assembleMass();    ///< the mass matrix (O(n^2)), after assembleForces()
   /// Generalized forces (rhs of M omega' = rhs) at x: O(n), no mass matrix.
@@ -114,7 +120,7 @@ class ChainDynamics {
   void computeJointTorques(const Eigen::VectorXd& x);
   void paperSpringTorques(const Eigen::VectorXd& x);
   void bendingSpringTorques(const Eigen::VectorXd& x);
-  double elasticEnergy(const Eigen::VectorXd& x) const;
+  double elasticEnergy(const Eigen::VectorXd& x);
   void kineticAndPotential(double& kinetic, double& potential) const;
 
   int n_;
@@ -158,6 +164,14 @@ class ChainDynamics {
   Eigen::VectorXd perturbed_, force_plus_, force_minus_, velocity_, step_rhs_, delta_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   bool skip_damping_ = false;  ///< generalized forces without the dampers (the stiffness Jacobian)
+  bool recursive_ = true;
+  // Articulated-body workspace: per link, at its base end with world-parallel axes, [linear; angular].
+  std::vector<Eigen::Matrix<double, 6, 6>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 6>>> articulated_;
+  std::vector<Eigen::Matrix<double, 6, 1>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 1>>> articulated_bias_;
+  std::vector<Eigen::Matrix<double, 6, 3>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 3>>> joint_u_;
+  Matrix3dVector joint_d_inverse_;
+  Eigen::Matrix3Xd joint_rhs_;
+  Eigen::VectorXd paper_q_, paper_qd_;  ///< (3n) paper coordinates for the paper springs' energy
 };
 
 }  // namespace cable_dynamics
