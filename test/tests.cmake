@@ -80,3 +80,7 @@ target_include_directories(cable_dynamics_core_nomalloc PUBLIC ${CMAKE_CURRENT_S
 target_link_libraries(cable_dynamics_core_nomalloc PUBLIC yaml-cpp)
 catkin_add_gtest(test_no_allocation test/test_no_allocation.cpp)
 target_link_libraries(test_no_allocation cable_dynamics_core_nomalloc ${GTEST_MAIN_LIBRARIES})
+
+catkin_add_gtest(test_formulations test/test_formulations.cpp)
+target_link_libraries(test_formulations cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_formulations PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
