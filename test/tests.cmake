@@ -61,9 +61,12 @@ target_include_directories(test_cable_node PRIVATE ${EIGEN3_INCLUDE_DIR} ${catki
 target_link_libraries(test_cable_node ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 add_dependencies(test_cable_node cable_msgs_generate_messages_cpp cable_dynamics_node)
 add_rostest(test/bad_config.test DEPENDENCIES cable_dynamics_node)
-# rostest finds test_bad_config.py as a node of this package in the devel space through this link.
-execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/test_bad_config.py
-  ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/test_bad_config.py)
+add_rostest(test/sim_time.test DEPENDENCIES cable_dynamics_node)
+# rostest finds the Python test nodes of this package in the devel space through these links.
+foreach(script test_bad_config.py test_sim_time.py)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
+    ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
+endforeach()
 
 # The cable URDF parses back with urdfdom.
 catkin_add_gtest(test_cable_urdf test/test_cable_urdf.cpp)

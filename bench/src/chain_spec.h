@@ -61,7 +61,9 @@ class System {
   virtual double energy() = 0;
   /// Far end of the last link [m]. Not timed.
   virtual Eigen::Vector3d tip() = 0;
-  /// Anything the table should mention (approximations, retries); empty if nothing.
+  /// False when a step since the last reset() failed or the engine flagged the simulation as unstable.
+  virtual bool healthy() const { return true; }
+  /// Anything the notes should mention (retried steps, engine warnings); empty if nothing.
   virtual std::string note() const { return {}; }
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -21,18 +22,22 @@ namespace bench {
 std::vector<Engine> engines() {
   std::vector<Engine> list;
 #ifdef BENCH_HAVE_MUJOCO
-  list.push_back({"MuJoCo", "ball joints (quaternions), MuJoCo's own RK4 (integrator=\"RK4\")", &makeMujoco});
+  list.push_back({"MuJoCo", "ball joints (quaternions); MuJoCo's own RK4 (option integrator=\"RK4\", mj_step)", &makeMujoco});
 #endif
 #ifdef BENCH_HAVE_DART
-  list.push_back({"DART", "BallJoint, computeForwardDynamics() in a hand-written RK4, positions by DART's integratePositions()",
+  list.push_back({"DART",
+                  "BallJoint (exp. coordinates); Skeleton::computeForwardDynamics() (ABA) in a hand-written RK4,\n"
+                  "           positions moved by DART's Skeleton::integratePositions() from the step's start",
                   &makeDart});
 #endif
 #ifdef BENCH_HAVE_SIMBODY
-  list.push_back({"Simbody", "Ball mobilizers (quaternions), realize(Acceleration) in a hand-written RK4, qdot = N(q)u",
+  list.push_back({"Simbody",
+                  "MobilizedBody::Ball (quaternions); realize(Stage::Acceleration) in a hand-written RK4,\n"
+                  "           qdot = N(q) u from Simbody, quaternions renormalized once per step",
                   &makeSimbody});
 #endif
 #ifdef BENCH_HAVE_KDL
-  list.push_back({"KDL", "3 revolute joints per link (X-Y-Z), ChainFdSolver_RNE in a hand-written RK4", &makeKdl});
+  list.push_back({"KDL", "3 revolute joints per link (X, Y, Z); ChainFdSolver_RNE in a hand-written RK4", &makeKdl});
 #endif
   return list;
 }
@@ -46,29 +51,31 @@ double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::d
 struct Options {
   std::vector<int> sizes{10, 30, 100, 300, 1000};
   int repetitions = 3;
-  double target = 0.3;   ///< wall time to fill per cell [s]
-  double budget = 20.0;  ///< most wall time one cell may take [s]
+  double target = 0.3;   ///< wall time to fill per repetition [s]
+  double budget = 20.0;  ///< most wall time one cell (warm-up + all repetitions) may take [s]
   int agreement_steps = 500;
+  std::vector<std::string> only;  ///< restrict to these columns (debugging)
 };
 
 /// One timed thing: a system's step(), or the project's derivative().
 struct Column {
   std::string name;
-  bool is_project = false;      ///< cable_dynamics' step (the denominator of the ratios)
-  bool is_derivative = false;   ///< ChainDynamics::derivative() rather than a step
-  std::string formulation;      ///< for the project's columns
+  bool is_project = false;     ///< cable_dynamics' step (the denominator of the ratios)
+  bool is_derivative = false;  ///< ChainDynamics::derivative() rather than a step
+  std::string formulation;     ///< the project's columns: "" (no key), "paper" or "recursive"
+  const Engine* engine = nullptr;
 };
 
 /// What one column measured at one n.
 struct Cell {
   bool skipped = true;
-  bool over_budget = false;     ///< skipped for time: larger n are skipped too
-  std::string why;              ///< reason of a skip or a failure
-  long ops = 0;                 ///< steps (or derivative calls) per repetition
-  std::vector<double> per_op;   ///< seconds per op, one per repetition
-  double drift = 0.0;           ///< largest |E_end - E_start| / releasable energy over the repetitions
-  double duration = 0.0;        ///< simulated time per repetition [s]
-  std::string note;
+  bool over_budget = false;    ///< skipped for time: larger n are skipped too
+  bool healthy = true;         ///< no failed step, no engine warning during the timed steps
+  std::string why;             ///< reason of a skip or a failure
+  long ops = 0;                ///< steps (or derivative calls) per repetition
+  std::vector<double> per_op;  ///< seconds per op, one per repetition
+  double drift = 0.0;          ///< largest |E_end - E_start| / releasable energy over the repetitions
+  double duration = 0.0;       ///< simulated time per repetition [s]
   double median() const {
     std::vector<double> v = per_op;
     std::sort(v.begin(), v.end());
@@ -83,7 +90,8 @@ struct Cell {
 
 std::string formatNs(double s) {
   const long long ns = std::llround(s * 1e9);
-  std::string digits = std::to_string(ns), out;
+  const std::string digits = std::to_string(ns);
+  std::string out;
   for (std::size_t i = 0; i < digits.size(); ++i) {
     if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
     out += digits[i];
@@ -109,11 +117,11 @@ void printRow(const std::string& first, const std::vector<std::string>& cells, i
   std::printf("\n");
 }
 
-std::vector<int> parseSizes(const std::string& text) {
-  std::vector<int> sizes;
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> items;
   std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, ',');) sizes.push_back(std::stoi(item));
-  return sizes;
+  for (std::string item; std::getline(stream, item, ',');) items.push_back(item);
+  return items;
 }
 
 Options parseOptions(int argc, char** argv) {
@@ -125,7 +133,8 @@ Options parseOptions(int argc, char** argv) {
       return a.rfind(prefix, 0) == 0 ? argv[i] + prefix.size() : nullptr;
     };
     if (const char* v = value("--sizes")) {
-      o.sizes = parseSizes(v);
+      o.sizes.clear();
+      for (const auto& s : split(v)) o.sizes.push_back(std::stoi(s));
     } else if (const char* v = value("--reps")) {
       o.repetitions = std::max(1, std::atoi(v));
     } else if (const char* v = value("--target")) {
@@ -134,13 +143,48 @@ Options parseOptions(int argc, char** argv) {
       o.budget = std::atof(v);
     } else if (const char* v = value("--agreement-steps")) {
       o.agreement_steps = std::atoi(v);
+    } else if (const char* v = value("--only")) {
+      o.only = split(v);
     } else {
-      std::cerr << "usage: cable_bench [--sizes=10,30,100,300,1000] [--reps=3] [--target=0.3] [--budget=20]"
-                   " [--agreement-steps=500]\n";
+      std::cerr << "usage: cable_bench [--sizes=10,30,100,300,1000] [--reps=3] [--target=0.3] [--budget=20]\n"
+                   "                   [--agreement-steps=500] [--only=COLUMN,...]\n";
       std::exit(a == "--help" || a == "-h" ? 0 : 2);
     }
   }
   return o;
+}
+
+std::string firstLine(const char* path, const char* prefix) {
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(prefix, 0) == 0) {
+      const std::size_t colon = line.find(':');
+      return colon == std::string::npos ? line : line.substr(colon + 2);
+    }
+  }
+  return "?";
+}
+
+std::string loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  std::string one, five, fifteen;
+  in >> one >> five >> fifteen;
+  return one + " " + five + " " + fifteen;
+}
+
+/// Time per op predicted at n from the sizes measured before: the last time, scaled by the exponent
+/// measured between the last two sizes (clamped to [1, 3]; 3, the worst here, after a single size).
+/// Returns 0 when nothing was measured yet.
+double predict(const std::map<int, double>& measured, int n) {
+  if (measured.empty()) return 0.0;
+  const auto last = std::prev(measured.end());
+  double exponent = 3.0;
+  if (measured.size() >= 2) {
+    const auto before = std::prev(last);
+    exponent = std::log(last->second / before->second) / std::log(static_cast<double>(last->first) / before->first);
+    exponent = std::min(3.0, std::max(1.0, exponent));
+  }
+  return last->second * std::pow(static_cast<double>(n) / last->first, exponent);
 }
 
 }  // namespace
@@ -151,118 +195,113 @@ int main(int argc, char** argv) {
   const Options options = parseOptions(argc, argv);
   const Clock::time_point run_start = Clock::now();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  const int reps = options.repetitions;
 
   // --- the columns ---------------------------------------------------------------------------------
   const std::vector<std::string> formulations = projectFormulations();
   const std::vector<Engine> engine_list = engines();
   const auto projectName = [](const std::string& f) { return f.empty() ? std::string("cable_dyn") : "cd:" + f; };
+  std::vector<Column> all_columns;
+  for (const auto& f : formulations) all_columns.push_back({projectName(f), true, false, f, nullptr});
+  for (const auto& e : engine_list) all_columns.push_back({e.name, false, false, "", &e});
+  for (const auto& f : formulations) all_columns.push_back({"deriv " + projectName(f), false, true, f, nullptr});
   std::vector<Column> columns;
-  for (const auto& f : formulations) columns.push_back({projectName(f), true, false, f});
-  for (const auto& e : engine_list) columns.push_back({e.name, false, false, ""});
-  for (const auto& f : formulations) columns.push_back({"deriv " + projectName(f), false, true, f});
+  for (const auto& c : all_columns) {
+    if (options.only.empty() || std::find(options.only.begin(), options.only.end(), c.name) != options.only.end() ||
+        c.is_project) {
+      columns.push_back(c);
+    }
+  }
 
-  std::printf("cable_dynamics speed benchmark: one RK4 step (dt = 1 ms, 4 forward-dynamics evaluations) of the\n"
-              "same chain of n rigid links (3 rotational DOF each, fixed base, gravity, 10 kg load folded into\n"
-              "the last link, in air, no springs). Wall time, single thread; %d repetitions interleaved, median.\n",
-              options.repetitions);
-  std::printf("cable_dynamics formulations: %s\n",
-              formulations.size() == 1 ? "one (no simulation.formulation key: the present paper formulation)"
-                                       : "paper and recursive (simulation.formulation)");
+  std::printf("cable_dynamics speed benchmark: one RK4 step (dt = 1 ms, 4 forward-dynamics evaluations) of the same\n"
+              "chain of n rigid links (3 rotational DOF each, fixed base, gravity, 10 kg load folded into the last\n"
+              "link, in air, no springs, no contacts) in every system. Wall time, one thread, %d repetitions\n"
+              "interleaved, median. CPU: %s; load average at start: %s\n",
+              reps, firstLine("/proc/cpuinfo", "model name").c_str(), loadAverage().c_str());
+  std::printf("cable_dynamics: %s\n",
+              formulations.size() == 1
+                  ? "one formulation (no simulation.formulation key yet): CableSimulator::step(), RK4"
+                  : "simulation.formulation=paper and =recursive side by side: CableSimulator::step(), RK4");
   for (const auto& e : engine_list) std::printf("  %-8s %s\n", e.name.c_str(), e.how.c_str());
-  std::printf("Cell: >= %.2f s of steps per repetition, at most %.0f s; '-' = skipped (see notes).\n\n",
-              options.target, options.budget);
+  std::printf("Per cell: >= %.2f s of timed steps per repetition; warm-up + %d repetitions <= %.0f s, else '-'.\n\n",
+              options.target, reps, options.budget);
 
-  // results[n][column]
-  std::map<int, std::vector<Cell>> results;
-  std::map<int, double> releasable;
+  std::map<int, std::vector<Cell>> results;  // results[n][column]
+  std::vector<std::map<int, double>> measured(columns.size());  // median seconds per op, by n
   std::vector<std::string> notes;
-  std::vector<std::pair<std::string, double>> agreement;  // engine, largest tip deviation [m]
+  std::vector<std::pair<std::string, double>> agreement;  // system, tip distance to the reference [m]
   int agreement_n = 0;
-  std::vector<double> previous_time(columns.size(), 0.0);
   int previous_n = 0;
 
   for (const int n : options.sizes) {
     const Clock::time_point size_start = Clock::now();
     std::vector<Cell>& cells = results[n];
     cells.assign(columns.size(), Cell());
-    // Build every system (not timed). The spec comes from the project: link properties and initial axes.
+    // The project's systems first: the spec (link properties, initial axes) comes from them.
     std::map<std::string, std::unique_ptr<ProjectSystem>> project;
-    for (const auto& f : formulations) {
-      const Clock::time_point t0 = Clock::now();
-      project[f] = std::make_unique<ProjectSystem>(n, f);
-      std::fprintf(stderr, "[bench] n = %d: %s built in %.1f s\n", n, projectName(f).c_str(), seconds(t0, Clock::now()));
-    }
+    for (const auto& f : formulations) project[f] = std::make_unique<ProjectSystem>(n, f);
     const ProjectSystem& reference = *project[formulations.front()];
     const ChainSpec spec = makeSpec(reference.params(), reference.initialAxes());
-    releasable[n] = spec.releasableEnergy();
-    std::vector<std::unique_ptr<System>> engine_systems;
+    const double releasable = spec.releasableEnergy();
+
+    std::vector<std::unique_ptr<System>> owned(columns.size());
     std::vector<System*> systems(columns.size(), nullptr);
     std::vector<std::function<void()>> ops(columns.size());
+
+    // Per column: skip by the budget, build (engines only when not skipped; not timed), warm up and
+    // measure a few ops, then choose the ops per repetition: >= target seconds each, and the whole
+    // cell (warm-up + all repetitions) within the budget.
     for (std::size_t c = 0; c < columns.size(); ++c) {
       const Column& col = columns[c];
-      if (col.is_project || col.is_derivative) {
-        ProjectSystem* p = project[col.formulation].get();
-        systems[c] = p;
-        ops[c] = col.is_derivative ? std::function<void()>([p] { p->derivative(); })
-                                   : std::function<void()>([p] { p->step(); });
-        continue;
-      }
-      const Engine& engine = *std::find_if(engine_list.begin(), engine_list.end(),
-                                           [&](const Engine& e) { return e.name == col.name; });
-      try {
-        const Clock::time_point t0 = Clock::now();
-        engine_systems.push_back(engine.make(spec));
-        std::fprintf(stderr, "[bench] n = %d: %s built in %.1f s\n", n, col.name.c_str(), seconds(t0, Clock::now()));
-        System* s = engine_systems.back().get();
-        systems[c] = s;
-        ops[c] = [s] { s->step(); };
-      } catch (const std::exception& e) {
-        cells[c].why = std::string("could not build: ") + e.what();
-      }
-    }
-
-    // Calibration: warm up and measure the time per op on a few ops, then choose the ops per
-    // repetition: >= target seconds each, and the whole cell (warm-up + all repetitions) <= budget.
-    const int reps = options.repetitions;
-    for (std::size_t c = 0; c < columns.size(); ++c) {
       Cell& cell = cells[c];
-      if (!systems[c]) continue;
-      const char* op = columns[c].is_derivative ? "call" : "step";
+      const std::string op = col.is_derivative ? "call" : "step";
       if (previous_n > 0 && results[previous_n][c].over_budget) {
         cell.over_budget = true;
         cell.why = "over the cell budget at n = " + std::to_string(previous_n) + " already";
         continue;
       }
-      // Not even probed when the cubic extrapolation of the time measured at the previous size (cubic:
-      // the worst scaling of any system here) says that a single op would exceed the cell's budget.
-      if (previous_n > 0 && previous_time[c] > 0.0) {
-        const double predicted = previous_time[c] * std::pow(static_cast<double>(n) / previous_n, 3.0);
-        if (predicted > options.budget) {
-          cell.over_budget = true;
-          cell.why = "one " + std::string(op) + " predicted at " + fixed(predicted, 0) + " s (cubic from " +
-                     fixed(previous_time[c], 3) + " s at n = " + std::to_string(previous_n) + ") > the " +
-                     fixed(options.budget, 0) + " s cell budget: not probed";
-          continue;
-        }
+      const double predicted = predict(measured[c], n);
+      if ((reps + 1) * predicted > 1.5 * options.budget) {
+        cell.over_budget = true;
+        cell.why = "one " + op + " predicted at " + fixed(predicted, 1) + " s from the smaller sizes: warm-up + " +
+                   std::to_string(reps) + " repetitions exceed the " + fixed(options.budget, 0) +
+                   " s cell budget (not built, not probed)";
+        continue;
       }
       try {
+        const Clock::time_point t0 = Clock::now();
+        if (col.engine) {
+          owned[c] = col.engine->make(spec);
+          systems[c] = owned[c].get();
+        } else {
+          systems[c] = project[col.formulation].get();
+        }
+        if (col.is_derivative) {
+          ProjectSystem* p = project[col.formulation].get();
+          ops[c] = [p] { p->derivative(); };
+        } else {
+          System* s = systems[c];
+          ops[c] = [s] { s->step(); };
+        }
+        const double built = seconds(t0, Clock::now());
         systems[c]->reset();
         long batch = 1;
         double per_op = 0.0, spent = 0.0;
         for (;;) {
-          const Clock::time_point t0 = Clock::now();
+          const Clock::time_point t1 = Clock::now();
           for (long i = 0; i < batch; ++i) ops[c]();
-          const double t = seconds(t0, Clock::now());
+          const double t = seconds(t1, Clock::now());
           spent += t;
           per_op = t / batch;
           if (spent >= 0.05 || per_op * batch * 2 > options.budget / (reps + 1)) break;
           batch *= 2;
         }
-        std::fprintf(stderr, "[bench] n = %d: %s probed, %.3g s per %s\n", n, columns[c].name.c_str(), per_op, op);
+        std::fprintf(stderr, "[bench] n = %d: %-18s built in %.1f s, warm-up %.3g s per %s\n", n, col.name.c_str(), built,
+                     per_op, op.c_str());
         if ((reps + 1) * per_op > options.budget) {
           cell.over_budget = true;
-          cell.why = "one " + std::string(op) + " took " + fixed(per_op, 2) + " s: warm-up + " + std::to_string(reps) +
-                     " repetitions of one " + op + " would exceed the " + fixed(options.budget, 0) + " s cell budget";
+          cell.why = "one " + op + " took " + fixed(per_op, 2) + " s: warm-up + " + std::to_string(reps) +
+                     " repetitions exceed the " + fixed(options.budget, 0) + " s cell budget";
           continue;
         }
         const long wanted = static_cast<long>(std::ceil(options.target / per_op));
@@ -275,7 +314,7 @@ int main(int argc, char** argv) {
     }
 
     // Timed repetitions, the columns interleaved (the starting column rotates every repetition).
-    for (int rep = 0; rep < options.repetitions; ++rep) {
+    for (int rep = 0; rep < reps; ++rep) {
       for (std::size_t i = 0; i < columns.size(); ++i) {
         const std::size_t c = (i + rep) % columns.size();
         Cell& cell = cells[c];
@@ -289,8 +328,9 @@ int main(int argc, char** argv) {
           const double t = seconds(t0, Clock::now());
           cell.per_op.push_back(t / cell.ops);
           if (!columns[c].is_derivative) {
+            cell.healthy = cell.healthy && s.healthy();
             const double e1 = s.energy();
-            cell.drift = std::max(cell.drift, std::abs(e1 - e0) / releasable[n]);
+            cell.drift = std::max(cell.drift, std::abs(e1 - e0) / releasable);
             cell.duration = cell.ops * spec.dt;
           }
         } catch (const std::exception& e) {
@@ -300,16 +340,18 @@ int main(int argc, char** argv) {
       }
     }
     for (std::size_t c = 0; c < columns.size(); ++c) {
-      Cell& cell = cells[c];
-      previous_time[c] = cell.skipped ? 0.0 : cell.median();
-      if (systems[c] && !columns[c].is_derivative) cell.note = systems[c]->note();
-      if (!cell.why.empty()) notes.push_back(columns[c].name + " n=" + std::to_string(n) + ": " + cell.why);
-      if (!cell.note.empty()) notes.push_back(columns[c].name + " n=" + std::to_string(n) + ": " + cell.note);
+      const Cell& cell = cells[c];
+      if (!cell.skipped) measured[c][n] = cell.median();
+      const std::string where = columns[c].name + " n=" + std::to_string(n) + ": ";
+      if (!cell.why.empty()) notes.push_back(where + cell.why);
+      if (systems[c] && !columns[c].is_derivative && !systems[c]->note().empty()) {
+        notes.push_back(where + systems[c]->note());
+      }
     }
     previous_n = n;
 
     // Light cross-check at the smallest size: the same motion in every system (tip after a fixed time).
-    if (agreement_n == 0 && options.agreement_steps > 0) {
+    if (agreement_n == 0 && options.agreement_steps > 0 && systems[0]) {
       agreement_n = n;
       System& ref = *systems[0];
       ref.reset();
@@ -334,8 +376,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> header;
   for (const auto& c : columns) header.push_back(c.name);
 
-  std::printf("1) Wall time per step [ns] (median of %d); last column(s): one ChainDynamics::derivative() call\n",
-              options.repetitions);
+  std::printf("1) Wall time per step [ns], median of %d; 'deriv' columns: one ChainDynamics::derivative() call\n", reps);
   printRow("n", header, 6, w);
   for (const int n : options.sizes) {
     std::vector<std::string> row;
@@ -349,7 +390,7 @@ int main(int argc, char** argv) {
   for (std::size_t p = 0; p < columns.size(); ++p) {
     if (!columns[p].is_project) continue;
     for (std::size_t e = 0; e < columns.size(); ++e) {
-      if (columns[e].is_project || columns[e].is_derivative) continue;
+      if (!columns[e].engine) continue;
       pairs.emplace_back(e, p);
       ratio_header.push_back(formulations.size() == 1 ? columns[e].name : columns[e].name + "/" + columns[p].formulation);
     }
@@ -364,28 +405,30 @@ int main(int argc, char** argv) {
     printRow(std::to_string(n), row, 6, w);
   }
 
-  std::printf("\n3) cable_dynamics: step / derivative() time (4 derivative calls per step plus the step's checks)\n");
+  std::printf("\n3) cable_dynamics: step time / derivative() time (4 calls per step, plus the step's own checks)\n");
   for (std::size_t p = 0; p < columns.size(); ++p) {
     if (!columns[p].is_project) continue;
-    std::size_t d = 0;
+    std::size_t d = p;
     for (std::size_t c = 0; c < columns.size(); ++c)
       if (columns[c].is_derivative && columns[c].formulation == columns[p].formulation) d = c;
-    std::printf("  %-12s", columns[p].name.c_str());
+    std::printf("  %-13s", columns[p].name.c_str());
     for (const int n : options.sizes) {
       const Cell &cs = results[n][p], &cd = results[n][d];
-      std::printf("  n=%d: %s", n, cs.skipped || cd.skipped ? "-" : fixed(cs.median() / cd.median(), 2).c_str());
+      std::printf("  n=%d: %s", n, cs.skipped || cd.skipped || d == p ? "-" : fixed(cs.median() / cd.median(), 2).c_str());
     }
     std::printf("\n");
     for (const std::size_t c : {p, d}) {
+      if (c == d && d == p) continue;
       const bool both = results.count(100) && results.count(1000) && !results[100][c].skipped && !results[1000][c].skipped;
-      std::printf("  %-12s  %s time(n=1000) / time(n=100) = %s\n", "", c == p ? "step:        " : "derivative():",
+      std::printf("  %-13s  %s time(n=1000) / time(n=100) = %s\n", "", c == p ? "step:        " : "derivative():",
                   both ? fixed(results[1000][c].median() / results[100][c].median(), 1).c_str() : "- (not both measured)");
     }
   }
   std::printf("  (time(n=1000) / time(n=100) is 10 for O(n), 100 for O(n^2), 1000 for O(n^3))\n");
 
-  std::printf("\n4) Correctness: largest |E_end - E_start| / releasable energy over the repetitions (must be < 1e-3)\n"
-              "   and simulated time per repetition [s] / step-time spread (max - min) / median over repetitions\n");
+  std::printf("\n4) Correctness: largest |E_end - E_start| / releasable energy over the repetitions (must be < 1e-3;\n"
+              "   releasable energy = E(start) - E(hanging at rest)); below: simulated time per repetition /\n"
+              "   spread of the step time over the repetitions, (max - min) / median\n");
   std::vector<std::string> check_header;
   std::vector<std::size_t> check_columns;
   for (std::size_t c = 0; c < columns.size(); ++c) {
@@ -403,27 +446,27 @@ int main(int argc, char** argv) {
         row.push_back("-");
         continue;
       }
-      const bool ok = cell.drift < 1e-3;
+      const bool ok = cell.drift < 1e-3 && cell.healthy;
       all_ok = all_ok && ok;
-      row.push_back(scientific(cell.drift) + (ok ? " ok" : " BAD"));
+      row.push_back(scientific(cell.drift) + (!cell.healthy ? " FAILED" : ok ? " ok" : " BAD"));
     }
     printRow(std::to_string(n), row, 6, 20);
     row.clear();
     for (const std::size_t c : check_columns) {
       const Cell& cell = results[n][c];
-      row.push_back(cell.skipped ? "" : fixed(cell.duration, 3) + " s/" + fixed(100.0 * cell.spread(), 0) + "%");
+      row.push_back(cell.skipped ? "" : fixed(cell.duration, 3) + " s / " + fixed(100.0 * cell.spread(), 0) + "%");
     }
     printRow("", row, 6, 20);
   }
   if (!agreement.empty()) {
-    std::printf("\n   Same motion: tip position after %d steps (%.1f s) at n = %d, distance to %s's:\n", options.agreement_steps,
-                options.agreement_steps * 1e-3, agreement_n, columns[0].name.c_str());
-    for (const auto& [name, d] : agreement) std::printf("     %-14s %.3g m\n", name.c_str(), d);
+    std::printf("\n   Same motion: tip position after %d steps (%.3g s) at n = %d, distance to %s's [m]:\n",
+                options.agreement_steps, options.agreement_steps * 1e-3, agreement_n, columns[0].name.c_str());
+    for (const auto& [name, d] : agreement) std::printf("     %-14s %.2e\n", name.c_str(), d);
   }
   std::printf("\nNotes:\n");
   if (notes.empty()) std::printf("  (none)\n");
   for (const auto& note : notes) std::printf("  %s\n", note.c_str());
-  std::printf("\nEnergy check: %s. Benchmark wall time: %.0f s.\n", all_ok ? "all passed" : "SOME FAILED",
-              seconds(run_start, Clock::now()));
+  std::printf("\nEnergy check: %s. Load average at the end: %s. Benchmark wall time: %.0f s.\n",
+              all_ok ? "all passed" : "SOME FAILED (see 4)", loadAverage().c_str(), seconds(run_start, Clock::now()));
   return all_ok ? 0 : 1;
 }

@@ -64,9 +64,17 @@ std::vector<std::pair<std::string, std::string>> chainXml(const ChainSpec& s) {
   return files;
 }
 
+/// MuJoCo's warnings go here instead of MUJOCO_LOG.TXT in the working directory.
+std::string& lastWarning() {
+  static std::string text;
+  return text;
+}
+void recordWarning(const char* message) { lastWarning() = message; }
+
 class MujocoSystem : public System {
  public:
   explicit MujocoSystem(const ChainSpec& spec) : spec_(spec) {
+    mju_user_warning = &recordWarning;
     // The files live in MuJoCo's in-memory file system (mjVFS), nothing is written to disk.
     auto vfs = std::make_unique<mjVFS>();
     mj_defaultVFS(vfs.get());
@@ -107,6 +115,15 @@ class MujocoSystem : public System {
     mj_forward(model_, data_);
   }
   void step() override { mj_step(model_, data_); }
+  bool healthy() const override {
+    // mj_step resets the state when it meets a bad acceleration (and warns): count those.
+    for (int i = 0; i < mjNWARNING; ++i)
+      if (data_->warning[i].number > 0) return false;
+    return true;
+  }
+  std::string note() const override {
+    return lastWarning().empty() ? std::string() : "MuJoCo warned: " + lastWarning();
+  }
   double energy() override {
     model_->opt.enableflags |= mjENBL_ENERGY;  // mj_energyPos/Vel compute nothing without it
     mj_forward(model_, data_);

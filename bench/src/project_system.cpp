@@ -35,12 +35,15 @@ std::vector<Eigen::Vector3d> ProjectSystem::initialAxes() const {
   return axes;
 }
 
-void ProjectSystem::reset() { sim_.reset(); }
+void ProjectSystem::reset() {
+  sim_.reset();
+  failed_since_reset_ = 0;
+}
 
 void ProjectSystem::step() {
   const cable_dynamics::StepReport report = sim_.step();
   if (report.substeps > 1) ++retried_steps_;
-  if (!report.ok) ++failed_steps_;
+  if (!report.ok) ++failed_steps_, ++failed_since_reset_;
 }
 
 double ProjectSystem::energy() {
@@ -60,8 +63,9 @@ Eigen::Vector3d ProjectSystem::tip() {
 
 std::string ProjectSystem::note() const {
   std::string s;
-  if (retried_steps_ > 0) s += std::to_string(retried_steps_) + " steps retried in substeps";
-  if (failed_steps_ > 0) s += (s.empty() ? "" : ", ") + std::to_string(failed_steps_) + " steps FAILED";
+  // Counted over every step this system made at this n (warm-up, repetitions, agreement run).
+  if (retried_steps_ > 0) s += std::to_string(retried_steps_) + " steps retried in substeps (energy or divergence check)";
+  if (failed_steps_ > 0) s += (s.empty() ? "" : ", ") + std::to_string(failed_steps_) + " steps FAILED (state kept)";
   return s;
 }
 

@@ -28,6 +28,7 @@ class ProjectSystem : public System {
   void step() override;
   double energy() override;
   Eigen::Vector3d tip() override;
+  bool healthy() const override { return failed_since_reset_ == 0; }
   std::string note() const override;
 
   /// One ChainDynamics::derivative() call at the initial state (what each RK4 stage calls).
@@ -37,7 +38,7 @@ class ProjectSystem : public System {
   cable_dynamics::CableParams params_;
   cable_dynamics::CableSimulator sim_;
   Eigen::VectorXd x0_, xdot_;
-  long retried_steps_ = 0, failed_steps_ = 0;
+  long retried_steps_ = 0, failed_steps_ = 0, failed_since_reset_ = 0;
 };
 
 }  // namespace bench

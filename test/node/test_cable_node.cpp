@@ -6,6 +6,9 @@
 #include <Eigen/Core>
 
 #include <cable_msgs/CableState.h>
+#include <cable_msgs/GetModel.h>
+#include <cable_msgs/Reset.h>
+#include <cable_msgs/SetPaused.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TwistStamped.h>
 #include <geometry_msgs/WrenchStamped.h>
@@ -231,6 +234,46 @@ TEST_F(CableNodeTest, NanAndStalePosesChangeNothing) {
   current->publish(flow);
   spinFor(1.0);
   EXPECT_EQ(outputs->state.rejected_inputs, rejected + 2);
+}
+
+TEST_F(CableNodeTest, ServicesPauseResetAndGiveTheModel) {
+  ASSERT_TRUE(ros::service::waitForService("get_model", ros::Duration(10.0)));
+  cable_msgs::GetModel model;
+  ASSERT_TRUE(ros::service::call("get_model", model));
+  const std::size_t dof = 3 * kLinks;
+  ASSERT_EQ(model.response.coordinates.size(), dof);
+  ASSERT_EQ(model.response.M.size(), dof * dof);
+  EXPECT_EQ(model.response.q.size(), dof);
+  for (std::size_t i = 0; i < dof; ++i) {
+    for (std::size_t j = 0; j < dof; ++j) {
+      EXPECT_NEAR(model.response.M[i * dof + j], model.response.M[j * dof + i], 1e-9);
+    }
+  }
+  // Paused: simulated time stands still; resumed: it runs again.
+  cable_msgs::SetPaused pause;
+  pause.request.paused = true;
+  ASSERT_TRUE(ros::service::call("set_paused", pause));
+  spinFor(0.3);
+  const double paused_at = outputs->state.sim_time;
+  spinFor(1.0);
+  EXPECT_NEAR(outputs->state.sim_time, paused_at, 1e-9);
+  EXPECT_TRUE(outputs->state.paused);
+  pause.request.paused = false;
+  ASSERT_TRUE(ros::service::call("set_paused", pause));
+  spinFor(1.0);
+  EXPECT_GT(outputs->state.sim_time, paused_at + 0.5);
+  // Reset to a given shape: every link tilted 0.2 rad; a wrong size is refused with a message.
+  cable_msgs::Reset reset;
+  reset.request.positions.assign(dof, 0.0);
+  for (int k = 0; k < kLinks; ++k) reset.request.positions[3 * k] = 0.2;
+  ASSERT_TRUE(ros::service::call("reset", reset));
+  EXPECT_TRUE(reset.response.success) << reset.response.message;
+  EXPECT_TRUE(waitFor([] { return outputs->state.sim_time < 0.5; }, 5.0));
+  cable_msgs::Reset wrong;
+  wrong.request.positions.assign(dof - 1, 0.0);
+  ASSERT_TRUE(ros::service::call("reset", wrong));
+  EXPECT_FALSE(wrong.response.success);
+  EXPECT_NE(wrong.response.message.find("expected 3n"), std::string::npos) << wrong.response.message;
 }
 
 TEST_F(CableNodeTest, NoPublishedNumberIsNonFinite) {
