@@ -53,6 +53,7 @@ struct Options {
   int repetitions = 3;
   double target = 0.3;   ///< wall time to fill per repetition [s]
   double budget = 20.0;  ///< most wall time one cell (warm-up + all repetitions) may take [s]
+  double build_budget = 60.0;  ///< most wall time building one engine's model may take [s]
   int agreement_steps = 500;
   std::vector<std::string> only;  ///< restrict to these columns (debugging)
 };
@@ -141,13 +142,15 @@ Options parseOptions(int argc, char** argv) {
       o.target = std::atof(v);
     } else if (const char* v = value("--budget")) {
       o.budget = std::atof(v);
+    } else if (const char* v = value("--build-budget")) {
+      o.build_budget = std::atof(v);
     } else if (const char* v = value("--agreement-steps")) {
       o.agreement_steps = std::atoi(v);
     } else if (const char* v = value("--only")) {
       o.only = split(v);
     } else {
       std::cerr << "usage: cable_bench [--sizes=10,30,100,300,1000] [--reps=3] [--target=0.3] [--budget=20]\n"
-                   "                   [--agreement-steps=500] [--only=COLUMN,...]\n";
+                   "                   [--build-budget=60] [--agreement-steps=500] [--only=COLUMN,...]\n";
       std::exit(a == "--help" || a == "-h" ? 0 : 2);
     }
   }
@@ -228,6 +231,7 @@ int main(int argc, char** argv) {
 
   std::map<int, std::vector<Cell>> results;  // results[n][column]
   std::vector<std::map<int, double>> measured(columns.size());  // median seconds per op, by n
+  std::vector<std::map<int, double>> build_time(columns.size());  // seconds to build the model, by n
   std::vector<std::string> notes;
   std::vector<std::pair<std::string, double>> agreement;  // system, tip distance to the reference [m]
   int agreement_n = 0;
@@ -268,6 +272,13 @@ int main(int argc, char** argv) {
                    " s cell budget (not built, not probed)";
         continue;
       }
+      const double predicted_build = predict(build_time[c], n);
+      if (predicted_build > options.build_budget) {
+        cell.over_budget = true;
+        cell.why = "building the model predicted at " + fixed(predicted_build, 0) + " s from the smaller sizes, over the " +
+                   fixed(options.build_budget, 0) + " s build budget (not built)";
+        continue;
+      }
       try {
         const Clock::time_point t0 = Clock::now();
         if (col.engine) {
@@ -284,6 +295,7 @@ int main(int argc, char** argv) {
           ops[c] = [s] { s->step(); };
         }
         const double built = seconds(t0, Clock::now());
+        if (col.engine) build_time[c][n] = std::max(built, 1e-3);
         systems[c]->reset();
         long batch = 1;
         double per_op = 0.0, spent = 0.0;

@@ -65,8 +65,7 @@ ChainDynamics::ChainDynamics(const CableParams& params)
 
   for (Eigen::Matrix3Xd* m : {&u_, &omega_, &base_pos_, &base_vel_, &known_acc_, &beta_, &force_, &moment_,
                               &drag_force_, &drag_moment_, &inertial_force_, &inertial_moment_, &torque_,
-                              &axis_acc_, &joint_force_, &damping_torque_, &spring_torque_, &paper_coords_,
-                              &paper_rates_, &link_base_acc_}) {
+                              &axis_acc_, &joint_force_, &damping_torque_, &spring_torque_, &link_base_acc_}) {
     m->setZero(3, n);
   }
   tensor_.assign(n, Eigen::Matrix3d::Zero());
@@ -548,31 +547,15 @@ void ChainDynamics::paperSpringTorques(const Eigen::VectorXd& x) {
   const LinkProperties& p = props_;
   Eigen::Matrix<double, 3, 1> q_next = Eigen::Vector3d::Zero(), c_next = Eigen::Vector3d::Zero();
   // Paper coordinates in a forward pass, then torques backwards so Q_a_{i+1}, Q_t_{i+1} are at hand.
-  Eigen::Matrix3Xd& coords = paper_coords_;
-  Eigen::Matrix3Xd& rates = paper_rates_;
-  double psi_prev = 0.0, phi_prev = 0.0, psi_rate_prev = 0.0, phi_rate_prev = 0.0;
-  for (int k = 0; k < n; ++k) {
-    const Eigen::Vector3d axis = u_.col(k), omega = omega_.col(k);
-    const double horizontal = std::hypot(axis.x(), axis.y());
-    const double te = std::atan2(horizontal, axis.z());
-    double psi = psi_reference_(k);
-    if (horizontal > kVerticalSine) psi += wrapToPi(std::atan2(axis.x(), axis.y()) - psi_reference_(k));
-    const double phi = x(StateLayout::twist(k)) - psi;
-    Eigen::Vector3d nvec, evec;
-    eulerAxes(te, psi, nvec, evec);
-    const double psi_rate = horizontal > kVerticalSine ? omega.dot(evec) / std::sin(te) : 0.0;
-    const double phi_rate = -omega.dot(axis) - psi_rate * std::cos(te);
-    coords.col(k) << te, psi - psi_prev, phi - phi_prev;
-    rates.col(k) << -omega.dot(nvec), psi_rate - psi_rate_prev, phi_rate - phi_rate_prev;
-    paper_psi_(k) = psi;
-    psi_prev = psi, phi_prev = phi, psi_rate_prev = psi_rate, phi_rate_prev = phi_rate;
-  }
+  paperCoordinates(x, paper_q_, paper_qd_);
+  double psi_sum = 0.0;
+  for (int k = 0; k < n; ++k) paper_psi_(k) = (psi_sum += paper_q_(3 * k + 1));
   for (int k = n - 1; k >= 0; --k) {
     const Eigen::Vector3d stiffness(p.stiffness_elevation(k), p.stiffness_azimuth(k), p.stiffness_torsion(k));
     const Eigen::Vector3d damping(p.damping_elevation(k), p.damping_azimuth(k), p.damping_torsion(k));
-    const Eigen::Vector3d q_spring = -stiffness.cwiseProduct(coords.col(k));
-    const Eigen::Vector3d q_damper = -damping.cwiseProduct(rates.col(k));
-    const double te = coords(0, k);
+    const Eigen::Vector3d q_spring = -stiffness.cwiseProduct(paper_q_.segment<3>(3 * k));
+    const Eigen::Vector3d q_damper = -damping.cwiseProduct(paper_qd_.segment<3>(3 * k));
+    const double te = paper_q_(3 * k);
     const Eigen::Vector3d axis = u_.col(k);
     Eigen::Vector3d nvec, evec;
     eulerAxes(te, paper_psi_(k), nvec, evec);

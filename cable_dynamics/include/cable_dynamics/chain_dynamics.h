@@ -156,7 +156,6 @@ class ChainDynamics {
   Eigen::Vector3d load_force_;
   double drag_power_ = 0.0, added_mass_power_ = 0.0, input_power_ = 0.0;
   Eigen::Matrix3Xd spring_torque_, damping_torque_;  ///< (3 x n) [N m]; torque_ is their sum
-  Eigen::Matrix3Xd paper_coords_, paper_rates_;      ///< (3 x n) paper springs' (te, a, t) and rates
   Eigen::VectorXd paper_psi_;                        ///< (n) absolute azimuths [rad]
   Eigen::Matrix3Xd link_base_acc_;                   ///< (3 x n) acceleration of each link's base end [m/s^2]
   // Semi-implicit integrator workspace.
@@ -171,7 +170,7 @@ class ChainDynamics {
   std::vector<Eigen::Matrix<double, 6, 3>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 3>>> joint_u_;
   Matrix3dVector joint_d_inverse_;
   Eigen::Matrix3Xd joint_rhs_;
-  Eigen::VectorXd paper_q_, paper_qd_;  ///< (3n) paper coordinates for the paper springs' energy
+  Eigen::VectorXd paper_q_, paper_qd_;  ///< (3n) paper coordinates and rates for the paper springs
 };
 
 }  // namespace cable_dynamics

@@ -189,51 +189,40 @@ bool CableNode::acceptPose(const geometry_msgs::PoseStamped& msg, const char* to
   return true;
 }
 
-void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
+bool CableNode::trackPose(const geometry_msgs::PoseStamped& msg, const char* topic, TrackedPose& tracked) {
   Eigen::Vector3d world;
-  if (!acceptPose(*msg, "rov_pose", world)) return;
-  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
-  if (have_rov_) {
-    const double dt = (stamp - rov_stamp_).toSec();
+  if (!acceptPose(msg, topic, world)) return false;
+  const ros::Time stamp = msg.header.stamp.isZero() ? ros::Time::now() : msg.header.stamp;
+  if (tracked.valid) {
+    const double dt = (stamp - tracked.stamp).toSec();
     if (dt > 1e-4) {
-      const Eigen::Vector3d velocity = (world - rov_world_) / dt;
+      const Eigen::Vector3d velocity = (world - tracked.position) / dt;
       if (velocity.norm() > kMaxInputSpeed) {
         ++rejected_;
-        ROS_WARN_THROTTLE(5.0, "cable_dynamics: rov_pose jumped %.2f m in %.3f s: ignored", (world - rov_world_).norm(), dt);
-        return;
+        ROS_WARN_THROTTLE(5.0, "cable_dynamics: %s jumped %.2f m in %.3f s: ignored", topic,
+                          (world - tracked.position).norm(), dt);
+        return false;
       }
-      rov_velocity_world_ = velocity;
+      tracked.velocity = velocity;
     }
   }
-  have_rov_ = true;
-  rov_world_ = world;
-  rov_stamp_ = stamp;
-  sim_->setLoadTarget(worldToPaper(world - options_.base_position), worldToPaper(rov_velocity_world_));
+  tracked.valid = true;
+  tracked.position = world;
+  tracked.stamp = stamp;
+  return true;
+}
+
+void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
+  if (!trackPose(*msg, "rov_pose", rov_)) return;
+  sim_->setLoadTarget(worldToPaper(rov_.position - options_.base_position), worldToPaper(rov_.velocity));
   if (params_.load.mode == LoadMode::kFree) {
     ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is free: the pose is ignored (use attached)");
   }
 }
 
 void CableNode::onBasePose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
-  Eigen::Vector3d world;
-  if (!acceptPose(*msg, "base_pose", world)) return;
-  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
-  if (have_base_) {
-    const double dt = (stamp - base_stamp_).toSec();
-    if (dt > 1e-4) {
-      const Eigen::Vector3d velocity = (world - base_world_) / dt;
-      if (velocity.norm() > kMaxInputSpeed) {
-        ++rejected_;
-        ROS_WARN_THROTTLE(5.0, "cable_dynamics: base_pose jumped %.2f m in %.3f s: ignored", (world - base_world_).norm(), dt);
-        return;
-      }
-      base_velocity_world_ = velocity;
-    }
-  }
-  have_base_ = true;
-  base_world_ = world;
-  base_stamp_ = stamp;
-  sim_->setBaseTarget(worldToPaper(world - options_.base_position), worldToPaper(base_velocity_world_));
+  if (!trackPose(*msg, "base_pose", base_)) return;
+  sim_->setBaseTarget(worldToPaper(base_.position - options_.base_position), worldToPaper(base_.velocity));
 }
 
 void CableNode::onCurrent(const geometry_msgs::TwistStamped::ConstPtr& msg) {

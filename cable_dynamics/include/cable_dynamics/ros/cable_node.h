@@ -50,6 +50,9 @@ class CableNode {
   /// rejections.
   bool acceptPose(const geometry_msgs::PoseStamped& msg, const char* topic, Eigen::Vector3d& world_position);
   bool fresh(const ros::Time& stamp, const char* topic);
+  /// acceptPose, then a jump check and the velocity estimate; updates `tracked` when accepted.
+  struct TrackedPose;
+  bool trackPose(const geometry_msgs::PoseStamped& msg, const char* topic, TrackedPose& tracked);
   void publish(const ros::Time& stamp, double step_seconds);
   void publishDiagnostics(const ros::Time& stamp);
   void prepareMessages();
@@ -90,13 +93,15 @@ class CableNode {
   double loop_rate_ = 0.0;
   ros::Time last_diagnostics_;
 
-  // Inputs.
-  bool have_rov_ = false;
-  Eigen::Vector3d rov_world_ = Eigen::Vector3d::Zero(), rov_velocity_world_ = Eigen::Vector3d::Zero();
-  ros::Time rov_stamp_;
-  bool have_base_ = false;
-  Eigen::Vector3d base_world_ = Eigen::Vector3d::Zero(), base_velocity_world_ = Eigen::Vector3d::Zero();
-  ros::Time base_stamp_;
+  // Inputs: the last accepted pose of the ROV and of the base (world frame), and their velocity
+  // estimated from successive poses.
+  struct TrackedPose {
+    bool valid = false;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< [m]
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< [m/s]
+    ros::Time stamp;
+  };
+  TrackedPose rov_, base_;
   unsigned rejected_ = 0, stale_ = 0, diverged_ = 0;
 };
 
