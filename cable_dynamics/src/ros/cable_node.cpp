@@ -317,7 +317,7 @@ void CableNode::publish(const ros::Time& stamp, double step_seconds) {
     sim_->reset();
     return;
   }
-  // Joint states: the paper's coordinates; effort = the joint springs' and dampers' generalized torque.
+  // Joint states: the paper's coordinates; effort = the joint springs' generalized torque (no dampers).
   joints_->force(snapshot_.q, effort_);
   for (int i = 0; i < dof; ++i) {
     joint_msg_.position[i] = snapshot_.q(i);

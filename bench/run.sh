@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# The speed benchmark in one command: installs what it needs (Debian packages), builds bench/ into
+# bench/build/, runs cable_bench and prints its tables (kept in bench/build/results.txt too).
+# Arguments go to cable_bench, e.g.  bash bench/run.sh --sizes=10,30,100 --reps=3
+# Exit status: cable_bench's (non-zero when a system failed the energy check).
+set -euo pipefail
+
+start=$(date +%s)
+# Debian's compilers and cmake first: a pyenv or venv python3 shadowing /usr/bin is no business of ours.
+export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
+BENCH_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+BUILD_DIR="$BENCH_DIR/build"
+
+packages=(cmake make g++ libeigen3-dev libyaml-cpp-dev libmujoco-dev libdart-dev libsimbody-dev liborocos-kdl-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} > 0)); then
+  sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  echo "[bench] installing: ${missing[*]}"
+  "${sudo[@]}" apt-get update
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+else
+  echo "[bench] Debian packages: all present"
+fi
+
+echo "[bench] building into $BUILD_DIR"
+mkdir -p "$BUILD_DIR"
+cmake -S "$BENCH_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >"$BUILD_DIR/configure.log" 2>&1 ||
+  { cat "$BUILD_DIR/configure.log"; exit 1; }
+grep -E "left out|not found" "$BUILD_DIR/configure.log" || true
+cmake --build "$BUILD_DIR" -j"$(nproc)"
+
+echo "[bench] running (progress on stderr; a full run takes a few minutes)"
+cd "$BUILD_DIR"  # anything an engine writes to its working directory stays in the build tree
+set +e
+./cable_bench "$@" | tee "$BUILD_DIR/results.txt"
+status=${PIPESTATUS[0]}
+set -e
+echo "[bench] bench/run.sh total wall time: $(($(date +%s) - start)) s (packages, build and benchmark)"
+exit "$status"
