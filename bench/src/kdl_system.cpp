@@ -5,7 +5,9 @@
 // by KDL::ChainFdSolver_RNE (joint-space mass matrix by composite rigid bodies, bias by recursive
 // Newton-Euler, then an LDL^T solve: O(n^3) in the chain length), inside a hand-written classical
 // RK4. The joint angles are plain Euclidean coordinates, so that RK4 needs no approximation.
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include <kdl/chain.hpp>
@@ -99,8 +101,6 @@ class KdlSystem : public System {
     for (unsigned int i = 0; i < chain_.getNrOfSegments(); ++i) frame = frame * chain_.getSegment(i).pose(q_(i));
     return {frame.p.x(), frame.p.y(), frame.p.z()};
   }
-
-  std::string note() const override { return {}; }
 
  private:
   void accelerations(const KDL::JntArray& q, const KDL::JntArray& v, KDL::JntArray& a) {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -46,6 +47,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+constexpr double kDriftTolerance = 1e-3;     ///< |E_end - E_start| / releasable energy
+constexpr double kMismatchTolerance = 1e-4;  ///< derivative() of a second formulation vs the first
+
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
 struct Options {
@@ -77,6 +81,7 @@ struct Cell {
   std::vector<double> per_op;  ///< seconds per op, one per repetition
   double drift = 0.0;          ///< largest |E_end - E_start| / releasable energy over the repetitions
   double duration = 0.0;       ///< simulated time per repetition [s]
+  bool failed_check = false;    ///< the model failed the correctness check: its time is not shown
   double median() const {
     std::vector<double> v = per_op;
     std::sort(v.begin(), v.end());
@@ -234,6 +239,7 @@ int main(int argc, char** argv) {
   std::vector<std::map<int, double>> build_time(columns.size());  // seconds to build the model, by n
   std::vector<std::string> notes;
   std::vector<std::pair<std::string, double>> agreement;  // system, tip distance to the reference [m]
+  std::map<int, std::map<std::string, double>> formulation_mismatch;  // n -> formulation -> relative x' difference
   int agreement_n = 0;
   int previous_n = 0;
 
@@ -351,6 +357,33 @@ int main(int argc, char** argv) {
         }
       }
     }
+    // Two formulations: the same x' at the initial state? (Relative to the first formulation's largest
+    // entry; the tolerance leaves room for the round-off of the O(n^3) Cholesky on an ill-conditioned
+    // mass matrix. A mismatch beyond it disqualifies the other formulation at this n.)
+    for (std::size_t f = 1; f < formulations.size(); ++f) {
+      Eigen::VectorXd reference_rate, rate;
+      double mismatch = std::numeric_limits<double>::infinity();
+      if (project[formulations[0]]->derivativeAtStart(reference_rate) && project[formulations[f]]->derivativeAtStart(rate)) {
+        mismatch = (rate - reference_rate).cwiseAbs().maxCoeff() / reference_rate.cwiseAbs().maxCoeff();
+      }
+      formulation_mismatch[n][formulations[f]] = mismatch;
+      if (!(mismatch <= kMismatchTolerance)) {
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+          if (columns[c].formulation == formulations[f] && !cells[c].skipped) cells[c].failed_check = true;
+        }
+      }
+    }
+    // A step that failed, or energy that drifted, disqualifies the system at this n: and with the
+    // project, its derivative() column too (it times a function that computes something wrong).
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      Cell& cell = cells[c];
+      if (cell.skipped || columns[c].is_derivative) continue;
+      cell.failed_check = cell.failed_check || !cell.healthy || !(cell.drift < kDriftTolerance);
+      if (cell.failed_check && columns[c].is_project) {
+        for (std::size_t d = 0; d < columns.size(); ++d)
+          if (columns[d].is_derivative && columns[d].formulation == columns[c].formulation) cells[d].failed_check = true;
+      }
+    }
     for (std::size_t c = 0; c < columns.size(); ++c) {
       const Cell& cell = cells[c];
       if (!cell.skipped) measured[c][n] = cell.median();
@@ -388,11 +421,14 @@ int main(int argc, char** argv) {
   std::vector<std::string> header;
   for (const auto& c : columns) header.push_back(c.name);
 
-  std::printf("1) Wall time per step [ns], median of %d; 'deriv' columns: one ChainDynamics::derivative() call\n", reps);
+  std::printf("1) Wall time per step [ns], median of %d; 'deriv' columns: one ChainDynamics::derivative() call.\n"
+              "   '-': not run (budget, see the notes); 'failed': the model failed the correctness check (4)\n", reps);
   printRow("n", header, 6, w);
   for (const int n : options.sizes) {
     std::vector<std::string> row;
-    for (const Cell& cell : results[n]) row.push_back(cell.skipped ? "-" : formatNs(cell.median()));
+    for (const Cell& cell : results[n]) {
+      row.push_back(cell.skipped ? "-" : cell.failed_check ? "failed" : formatNs(cell.median()));
+    }
     printRow(std::to_string(n), row, 6, w);
   }
 
@@ -412,7 +448,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> row;
     for (const auto& [e, p] : pairs) {
       const Cell &ce = results[n][e], &cp = results[n][p];
-      row.push_back(ce.skipped || cp.skipped ? "-" : fixed(ce.median() / cp.median(), 3));
+      row.push_back(ce.skipped || cp.skipped                ? "-"
+                    : ce.failed_check || cp.failed_check ? "failed"
+                                                         : fixed(ce.median() / cp.median(), 3));
     }
     printRow(std::to_string(n), row, 6, w);
   }
@@ -426,12 +464,16 @@ int main(int argc, char** argv) {
     std::printf("  %-13s", columns[p].name.c_str());
     for (const int n : options.sizes) {
       const Cell &cs = results[n][p], &cd = results[n][d];
-      std::printf("  n=%d: %s", n, cs.skipped || cd.skipped || d == p ? "-" : fixed(cs.median() / cd.median(), 2).c_str());
+      std::printf("  n=%d: %s", n,
+                  cs.skipped || cd.skipped || d == p      ? "-"
+                  : cs.failed_check || cd.failed_check ? "failed"
+                                                       : fixed(cs.median() / cd.median(), 2).c_str());
     }
     std::printf("\n");
     for (const std::size_t c : {p, d}) {
       if (c == d && d == p) continue;
-      const bool both = results.count(100) && results.count(1000) && !results[100][c].skipped && !results[1000][c].skipped;
+      const auto usable = [&](int n) { return results.count(n) && !results[n][c].skipped && !results[n][c].failed_check; };
+      const bool both = usable(100) && usable(1000);
       std::printf("  %-13s  %s time(n=1000) / time(n=100) = %s\n", "", c == p ? "step:        " : "derivative():",
                   both ? fixed(results[1000][c].median() / results[100][c].median(), 1).c_str() : "- (not both measured)");
     }
@@ -458,7 +500,7 @@ int main(int argc, char** argv) {
         row.push_back("-");
         continue;
       }
-      const bool ok = cell.drift < 1e-3 && cell.healthy;
+      const bool ok = cell.drift < kDriftTolerance && cell.healthy;
       all_ok = all_ok && ok;
       row.push_back(scientific(cell.drift) + (!cell.healthy ? " FAILED" : ok ? " ok" : " BAD"));
     }
@@ -470,6 +512,17 @@ int main(int argc, char** argv) {
     }
     printRow("", row, 6, 20);
   }
+  for (std::size_t f = 1; f < formulations.size(); ++f) {
+    std::printf("\n   derivative() at the initial state, %s vs %s: max |difference| / max |%s's| (must be <= 1e-4)\n  ",
+                projectName(formulations[f]).c_str(), projectName(formulations[0]).c_str(), projectName(formulations[0]).c_str());
+    for (const int n : options.sizes) {
+      const double m = formulation_mismatch[n][formulations[f]];
+      std::printf("   n=%d: %s%s", n, std::isfinite(m) ? scientific(m).c_str() : "derivative() failed",
+                  m <= kMismatchTolerance ? " ok" : " BAD");
+      all_ok = all_ok && m <= kMismatchTolerance;
+    }
+    std::printf("\n");
+  }
   if (!agreement.empty()) {
     std::printf("\n   Same motion: tip position after %d steps (%.3g s) at n = %d, distance to %s's [m]:\n",
                 options.agreement_steps, options.agreement_steps * 1e-3, agreement_n, columns[0].name.c_str());
@@ -478,7 +531,7 @@ int main(int argc, char** argv) {
   std::printf("\nNotes:\n");
   if (notes.empty()) std::printf("  (none)\n");
   for (const auto& note : notes) std::printf("  %s\n", note.c_str());
-  std::printf("\nEnergy check: %s. Load average at the end: %s. Benchmark wall time: %.0f s.\n",
+  std::printf("\nCorrectness checks: %s. Load average at the end: %s. Benchmark wall time: %.0f s.\n",
               all_ok ? "all passed" : "SOME FAILED (see 4)", loadAverage().c_str(), seconds(run_start, Clock::now()));
   return all_ok ? 0 : 1;
 }

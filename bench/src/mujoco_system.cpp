@@ -75,6 +75,7 @@ class MujocoSystem : public System {
  public:
   explicit MujocoSystem(const ChainSpec& spec) : spec_(spec) {
     mju_user_warning = &recordWarning;
+    lastWarning().clear();
     // The files live in MuJoCo's in-memory file system (mjVFS), nothing is written to disk.
     auto vfs = std::make_unique<mjVFS>();
     mj_defaultVFS(vfs.get());
@@ -125,7 +126,7 @@ class MujocoSystem : public System {
     return lastWarning().empty() ? std::string() : "MuJoCo warned: " + lastWarning();
   }
   double energy() override {
-    model_->opt.enableflags |= mjENBL_ENERGY;  // mj_energyPos/Vel compute nothing without it
+    model_->opt.enableflags |= mjENBL_ENERGY;  // MuJoCo computes the energies only with this flag
     mj_forward(model_, data_);
     model_->opt.enableflags &= ~mjENBL_ENERGY;
     return data_->energy[0] + data_->energy[1];

@@ -75,4 +75,9 @@ void ProjectSystem::derivative() {
   }
 }
 
+bool ProjectSystem::derivativeAtStart(Eigen::VectorXd& xdot) {
+  xdot.setZero(x0_.size());
+  return sim_.dynamics().derivative(x0_, cable_dynamics::EndInputs(), xdot) && xdot.allFinite();
+}
+
 }  // namespace bench

@@ -33,6 +33,8 @@ class ProjectSystem : public System {
 
   /// One ChainDynamics::derivative() call at the initial state (what each RK4 stage calls).
   void derivative();
+  /// x' at the initial state; false when derivative() fails there.
+  bool derivativeAtStart(Eigen::VectorXd& xdot);
 
  private:
   cable_dynamics::CableParams params_;
