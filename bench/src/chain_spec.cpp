@@ -15,7 +15,11 @@ constexpr double kDiameter = 0.025;      // [m]
 constexpr double kMassPerLength = 0.6;   // [kg/m]
 constexpr double kLoadMass = 10.0;       // [kg]
 constexpr double kTilt = 0.3;            // elevation of every link from the downward vertical [rad]
-constexpr double kAzimuthSwing = 0.5;    // absolute azimuths alternate 0, +0.5, 0, +0.5, ... [rad]
+/// The absolute azimuth turns evenly from 0 at the base to this at the tip: a smooth, non-planar curve.
+/// (Not alternating azimuths: a zigzag is a violent start for fine chains, its kinks snap straight
+/// faster than RK4 at dt = 1 ms resolves: at n = 300 every system loses energy conservation past 1e-3
+/// within 0.1 s and blows up near 0.2 s.)
+constexpr double kAzimuthTurn = 1.0;     // [rad]
 }  // namespace
 
 std::string projectConfig(int links) {
@@ -33,9 +37,9 @@ std::string projectConfig(int links) {
     << "gravity: 9.81\n"
     << "initial:\n"
     << "  elevation: " << kTilt << "\n"
-    // The config's azimuths are relative to the previous link: 0, +swing, -swing, +swing, ...
+    // The config's azimuths are relative to the previous link: 0, then turn / (n - 1) each.
     << "  azimuth: [";
-  for (int k = 0; k < links; ++k) y << (k ? ", " : "") << (k == 0 ? 0.0 : (k % 2 == 1 ? kAzimuthSwing : -kAzimuthSwing));
+  for (int k = 0; k < links; ++k) y << (k ? ", " : "") << (k == 0 || links == 1 ? 0.0 : kAzimuthTurn / (links - 1));
   y << "]\n"
     << "  torsion: 0.0\n"
     << "simulation: {dt: 0.001, integrator: rk4}\n";

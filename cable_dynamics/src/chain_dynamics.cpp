@@ -76,6 +76,8 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   for (Eigen::VectorXd* v : {&force_plus_, &force_minus_, &velocity_, &step_rhs_, &delta_}) v->setZero(3 * n);
   perturbed_.setZero(StateLayout::size(n));
   recursive_ = params.simulation.formulation == "recursive";
+  has_springs_ = props_.stiffness_elevation.any() || props_.stiffness_azimuth.any() || props_.stiffness_torsion.any() ||
+                 props_.damping_elevation.any() || props_.damping_azimuth.any() || props_.damping_torsion.any();
   articulated_.assign(n, Eigen::Matrix<double, 6, 6>::Zero());
   articulated_bias_.assign(n, Eigen::Matrix<double, 6, 1>::Zero());
   joint_u_.assign(n, Eigen::Matrix<double, 6, 3>::Zero());
@@ -184,15 +186,19 @@ void ChainDynamics::solveRecursive() {
         rotation + (props_.inertia_transverse(k) - props_.inertia_polar(k)) * axis * axis.transpose();
     // Inertia of the link about its base end: the translation integral of A over the length, plus the
     // thickness rotation; its velocity terms (centripetal beta, gyroscopic) minus the external wrench.
+    // With A = m' I + m_a' (I - u u^T) and [u]x u = 0 the blocks simplify: A [u]x = (m' + m_a') [u]x and
+    // [u]x A [u]x = (m' + m_a') [u]x [u]x = -(m' + m_a') (I - u u^T).
+    const double across = mass_per_length_(k) + added_per_length_(k);  // [kg/m]
+    const Eigen::Matrix3d transverse = identity - axis * axis.transpose();
     Matrix6d& inertia = articulated_[k];
     inertia.topLeftCorner<3, 3>() = l * a;
-    inertia.topRightCorner<3, 3>() = -(0.5 * l * l) * a * ux;
-    inertia.bottomLeftCorner<3, 3>() = (0.5 * l * l) * ux * a;
-    inertia.bottomRightCorner<3, 3>() = -(l * l * l / 3.0) * ux * a * ux + recursion_rotation;
+    inertia.topRightCorner<3, 3>() = -(0.5 * l * l * across) * ux;
+    inertia.bottomLeftCorner<3, 3>() = (0.5 * l * l * across) * ux;
+    inertia.bottomRightCorner<3, 3>() = (l * l * l / 3.0 * across) * transverse + recursion_rotation;
     Vector6d& bias = articulated_bias_[k];
-    bias.head<3>() = (0.5 * l * l) * a * beta - force_.col(k);
-    bias.tail<3>() = (l * l * l / 3.0) * ux * (a * beta) + omega.cross(rotation * omega) - axis.cross(moment_.col(k)) -
-                     torque_.col(k);
+    bias.head<3>() = (0.5 * l * l) * (a * beta) - force_.col(k);
+    bias.tail<3>() = (l * l * l / 3.0 * across) * axis.cross(beta) + omega.cross(rotation * omega) -
+                     axis.cross(moment_.col(k)) - torque_.col(k);
     if (k == n - 1) {  // the load: a point mass at the far end
       const Eigen::Vector3d r = l * axis;
       const Eigen::Matrix3d rx = skew(r);
@@ -505,7 +511,7 @@ void ChainDynamics::computeJointTorques(const Eigen::VectorXd& x) {
   spring_torque_.setZero();
   damping_torque_.setZero();
   if (stiffness_model_ == StiffnessModel::kPaper) {
-    paperSpringTorques(x);
+    if (has_springs_) paperSpringTorques(x);  // all zero (the presets): nothing to compute
   } else {
     bendingSpringTorques(x);
   }
@@ -627,6 +633,7 @@ double ChainDynamics::elasticEnergy(const Eigen::VectorXd& x) {
   double energy = 0.0;
   const LinkProperties& p = props_;
   if (stiffness_model_ == StiffnessModel::kPaper) {
+    if (!has_springs_) return 0.0;
     Eigen::VectorXd& q = paper_q_;
     paperCoordinates(x, q, paper_qd_);
     for (int k = 0; k < n_; ++k) {

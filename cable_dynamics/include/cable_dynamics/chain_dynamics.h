@@ -164,6 +164,7 @@ class ChainDynamics {
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   bool skip_damping_ = false;  ///< generalized forces without the dampers (the stiffness Jacobian)
   bool recursive_ = true;
+  bool has_springs_ = false;  ///< any joint spring or damper at all
   // Articulated-body workspace: per link, at its base end with world-parallel axes, [linear; angular].
   std::vector<Eigen::Matrix<double, 6, 6>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 6>>> articulated_;
   std::vector<Eigen::Matrix<double, 6, 1>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 1>>> articulated_bias_;
