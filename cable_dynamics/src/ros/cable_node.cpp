@@ -299,7 +299,9 @@ void CableNode::onTimer(const ros::TimerEvent&) {
     rate_window_steps_ = rate_window_cycles_ = 0;
     rate_window_start_ = ros::WallTime::now();
   }
-  publish(now, step_seconds_);
+  // On a coarse /clock two cycles can share a stamp; TF rejects repeated stamps, so publish once per stamp.
+  if (now != last_publish_) publish(now, step_seconds_);
+  last_publish_ = now;
   if ((now - last_diagnostics_).toSec() >= options_.diagnostics_period || now < last_diagnostics_) {
     publishDiagnostics(now);
     last_diagnostics_ = now;

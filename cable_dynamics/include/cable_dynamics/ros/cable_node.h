@@ -91,7 +91,7 @@ class CableNode {
   ros::WallTime rate_window_start_;
   long rate_window_steps_ = 0, rate_window_cycles_ = 0;
   double loop_rate_ = 0.0;
-  ros::Time last_diagnostics_;
+  ros::Time last_diagnostics_, last_publish_;
 
   // Inputs: the last accepted pose of the ROV and of the base (world frame), and their velocity
   // estimated from successive poses.
