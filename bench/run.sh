@@ -38,6 +38,7 @@ cd "$BUILD_DIR"  # anything an engine writes to its working directory stays in t
 set +e
 ./cable_bench "$@" | tee "$BUILD_DIR/results.txt"
 status=${PIPESTATUS[0]}
+./fluid_step | tee -a "$BUILD_DIR/results.txt"  # the project alone, with full fluid forces
 set -e
 echo "[bench] bench/run.sh total wall time: $(($(date +%s) - start)) s (packages, build and benchmark)"
 exit "$status"
