@@ -88,6 +88,7 @@ void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::Vector
   }
   if (!q.allFinite() || !qd.allFinite()) throw std::invalid_argument("state has a non-finite value");
   dynamics_.stateFromPaper(q, qd, x_);
+  balance_cached_ = false;
   // Continue azimuths from the given angles (straight-down links keep the azimuth they were given).
   Eigen::VectorXd psi(links());
   double sum = 0.0;
@@ -134,8 +135,10 @@ double CableSimulator::energyBalance(const Eigen::VectorXd& x, double t, double&
 bool CableSimulator::advance(double h) {
   ChainDynamics& f = dynamics_;
   const double t = time_;
-  double scale_before = 0.0;
-  const double balance_before = energyBalance(x_, t, scale_before);
+  // The balance after the previous accepted step is the one before this one, unless an input changed.
+  double scale_before = cached_scale_;
+  const double balance_before = balance_cached_ ? cached_balance_ : energyBalance(x_, t, scale_before);
+  balance_cached_ = false;
   if (semi_implicit_) {
     if (!f.semiImplicitStep(x_, endsAt(t), h, stage_)) return false;
     x_ = stage_;
@@ -173,7 +176,11 @@ bool CableSimulator::acceptable(double balance_before, double scale_before) {
   double scale_after = 0.0;
   const double balance_after = energyBalance(x_, time_, scale_after);
   const double scale = std::max(scale_before, scale_after) + 1e-9;
-  return balance_after - balance_before <= kEnergyTolerance * scale;
+  if (balance_after - balance_before > kEnergyTolerance * scale) return false;
+  balance_cached_ = true;
+  cached_balance_ = balance_after;
+  cached_scale_ = scale_after;
+  return true;
 }
 
 StepReport CableSimulator::step() {
@@ -186,15 +193,12 @@ StepReport CableSimulator::step() {
     if (ok) {
       report.substeps = pieces;
       time_ = t0 + dt_;  // no drift from summing the pieces
-      dynamics_.paperCoordinates(x_, q_, qd_);
-      Eigen::VectorXd& psi = k4_;  // scratch: absolute azimuths from the relative ones
-      double sum = 0.0;
-      for (int k = 0; k < links(); ++k) psi(k) = (sum += q_(3 * k + 1));
-      dynamics_.setAzimuthReference(psi.head(links()));  // a Ref: no copy, no allocation
+      dynamics_.followAzimuths(x_);
       return report;
     }
     x_ = x_start_;
     time_ = t0;
+    balance_cached_ = false;
   }
   dynamics_.paperCoordinates(x_, q_, qd_);
   std::ostringstream message;
@@ -221,16 +225,21 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
                      out.dissipated_energy - out.work_input;
 }
 
-void CableSimulator::setCurrentWorld(const Eigen::Vector3d& current) { dynamics_.current().setUniformWorld(current); }
+void CableSimulator::setCurrentWorld(const Eigen::Vector3d& current) {
+  dynamics_.current().setUniformWorld(current);
+  balance_cached_ = false;
+}
 
 void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
   external_load_ = true;
+  balance_cached_ = false;
   load_target_pos_ = position;
   load_target_vel_ = velocity;
 }
 
 void CableSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
   external_base_ = true;
+  balance_cached_ = false;
   base_target_pos_ = position;
   base_target_vel_ = velocity;
 }

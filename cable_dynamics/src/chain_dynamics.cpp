@@ -519,6 +519,16 @@ void ChainDynamics::computeJointTorques(const Eigen::VectorXd& x) {
   torque_ = spring_torque_ + damping_torque_;
 }
 
+void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
+  for (int k = 0; k < n_; ++k) {
+    const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k));
+    // Straight down the azimuth is undefined: keep the previous one (as paperCoordinates() does).
+    if (std::hypot(axis.x(), axis.y()) > kVerticalSine * axis.norm()) {
+      psi_reference_(k) += wrapToPi(std::atan2(axis.x(), axis.y()) - psi_reference_(k));
+    }
+  }
+}
+
 void ChainDynamics::paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& q, Eigen::VectorXd& qd) const {
   double psi_prev = 0.0, phi_prev = 0.0, psi_rate_prev = 0.0, phi_rate_prev = 0.0;
   for (int k = 0; k < n_; ++k) {

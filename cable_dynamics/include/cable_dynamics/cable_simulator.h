@@ -84,6 +84,8 @@ class CableSimulator {
   ChainDynamics dynamics_;
   double dt_;
   bool semi_implicit_;
+  bool balance_cached_ = false;  ///< cached_balance_ holds the energy balance of the present state
+  double cached_balance_ = 0.0, cached_scale_ = 0.0;
   double time_ = 0.0;
   double omega_limit_;
   Eigen::VectorXd x_, x_start_, k1_, k2_, k3_, k4_, stage_;

@@ -74,6 +74,9 @@ class ChainDynamics {
   /// by the simulator between steps; only the paper stiffness model uses them).
   void setAzimuthReference(const Eigen::Ref<const Eigen::VectorXd>& psi) { psi_reference_ = psi; }
 
+  /// Moves the azimuth reference to the state's azimuths (unwrapped against it), after each accepted step.
+  void followAzimuths(const Eigen::VectorXd& x);
+
   /// true: O(n) articulated-body recursion; false: dense mass matrix and Cholesky (O(n^3)).
   bool recursive() const { return recursive_; }
   void setRecursive(bool recursive) { recursive_ = recursive; }
