@@ -17,7 +17,8 @@ DEB_PACKAGES=(
   libdiagnostic-msgs-dev python3-std-msgs python3-geometry-msgs python3-sensor-msgs
   python3-sympy python3-numpy python3-pytest python3-yaml python3-matplotlib libmujoco-dev
   libtf2-eigen-dev libtinyxml-dev rviz xvfb imagemagick python3-tf2-ros python3-diagnostic-msgs
-  python3-visualization-msgs python3-rosgraph-msgs
+  python3-visualization-msgs python3-rosgraph-msgs python3-rosmsg python3-roslaunch python3-rosunit python3-roslib
+  python3-rosgraph
 )
 
 # Installs the Debian packages that are missing (apt-get update first), as root or through sudo.
