@@ -77,7 +77,7 @@ def read_csv(path):
     missing = [w for w in wanted if w not in index]
     if missing:
         fail("%s: missing column(s) %s" % (path, ", ".join(missing)))
-    wanted += [c for c in ["top_tension"] + [e[0] for e in ENERGY_SERIES] if c in index]
+    wanted += [c for c in ["top_tension", "base_x", "base_y", "base_z"] + [e[0] for e in ENERGY_SERIES] if c in index]
 
     usecols = [index[w] for w in wanted]
     try:
@@ -166,17 +166,20 @@ def plot_shape(ax, fig, cols, links, count):
     rows = snapshot_rows(t, count)
     # Largest distance of any drawn point from the viewing plane (hidden by the projection).
     off_plane = np.nanmax(np.abs(ex[rows] * uy - ey[rows] * ux)) if len(rows) else 0.0
+    # The base's position (it may move: a heaving vessel); older CSVs without base_x.. have it at the origin.
+    zeros = np.zeros(len(t))
+    bx, by, bz = (cols.get("base_x", zeros), cols.get("base_y", zeros), cols.get("base_z", zeros))
     for r in rows:
-        s = np.concatenate([[0.0], ex[r] * ux + ey[r] * uy])
-        z = np.concatenate([[0.0], ez[r]])
+        s = np.concatenate([[bx[r] * ux + by[r] * uy], ex[r] * ux + ey[r] * uy])
+        z = np.concatenate([[bz[r]], ez[r]])
         c = cmap(norm(t[r]))
         ax.plot(s, z, "-", color=c, linewidth=1.8, marker="o", markersize=3.0, zorder=2)
         ax.plot(s[-1], z[-1], "o", color=c, markersize=10, markeredgecolor="black",
                 markeredgewidth=0.8, zorder=3)
 
-    # Legend proxies: base (fixed, at the origin) and load (end of the last link).
+    # Legend proxies: base (its rest position, the origin) and load (end of the last link).
     ax.plot(0.0, 0.0, marker="^", color="black", markersize=12, linestyle="none", zorder=4,
-            label="base (origin)")
+            label="base (rest position)")
     ax.plot([], [], "o", color="lightgray", markersize=10, markeredgecolor="black",
             markeredgewidth=0.8, linestyle="none", label="load (end of link %d)" % n)
 

@@ -27,6 +27,7 @@ std::vector<double> rowValues(const SimulationSnapshot& s) {
   v.push_back(s.dissipated_energy);
   v.push_back(s.work_input);
   v.push_back(s.total_energy);
+  for (int c = 0; c < 3; ++c) v.push_back(s.chain.ends(c, 0));  // the base (it may move)
   return v;
 }
 
@@ -42,7 +43,7 @@ std::vector<std::string> csvColumns(int links) {
   for (int k = 1; k <= links; ++k) c.push_back("tension" + std::to_string(k));
   for (const char* name : {"top_tension", "load_force_x", "load_force_y", "load_force_z", "base_force_x",
                            "base_force_y", "base_force_z", "kinetic_energy", "potential_energy", "elastic_energy",
-                           "dissipated_energy", "work_input", "total_energy"}) {
+                           "dissipated_energy", "work_input", "total_energy", "base_x", "base_y", "base_z"}) {
     c.push_back(name);
   }
   return c;

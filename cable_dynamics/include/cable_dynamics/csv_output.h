@@ -11,7 +11,8 @@
 namespace cable_dynamics {
 
 /// Column names: time, the 3n coordinates, their rates (`..._rate`), endK_x/y/z (paper frame, z down),
-/// tensionK, top_tension, load_force_x/y/z, base_force_x/y/z, and the energies.
+/// tensionK, top_tension, load_force_x/y/z, base_force_x/y/z, the energies, and base_x/y/z (the base's
+/// position, which moves with base.motion or a base pose).
 std::vector<std::string> csvColumns(int links);
 
 /// Writes the header line.
