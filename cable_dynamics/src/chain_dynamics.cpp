@@ -64,7 +64,7 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   paper_psi_ = Eigen::VectorXd::Zero(n);
 
   for (Eigen::Matrix3Xd* m : {&u_, &omega_, &base_pos_, &base_vel_, &known_acc_, &beta_, &force_, &moment_,
-                              &drag_force_, &drag_moment_, &inertial_force_, &inertial_moment_, &torque_,
+                              &inertial_force_, &inertial_moment_, &torque_,
                               &axis_acc_, &joint_force_, &damping_torque_, &spring_torque_, &link_base_acc_}) {
     m->setZero(3, n);
   }
@@ -131,8 +131,6 @@ void ChainDynamics::externalForces(const EndInputs& ends) {
         md += w * s * drag;
       }
     }
-    drag_force_.col(k) = fd;
-    drag_moment_.col(k) = md;
     force_.col(k) = f + fd;
     moment_.col(k) = m + md;
     drag_power_ += fd.dot(base_vel_.col(k)) + md.dot(axis_rate);
@@ -499,12 +497,6 @@ double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs
   const double elastic = elasticEnergy(x);
   magnitude = std::abs(kinetic) + std::abs(potential) + std::abs(elastic);
   return kinetic + potential + elastic;
-}
-
-void ChainDynamics::jointTorques(const Eigen::VectorXd& x, Eigen::Matrix3Xd& torque) {
-  kinematics(x, EndInputs());
-  computeJointTorques(x);
-  torque = torque_;
 }
 
 void ChainDynamics::computeJointTorques(const Eigen::VectorXd& x) {

@@ -105,10 +105,6 @@ class ChainDynamics {
   /// State from paper coordinates: axes, twists, angular velocities (base at rest, energies zero).
   void stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const;
 
-  /// World-frame torque on each link from the joint springs and dampers (3 x n) [N m] at x
-  /// (base at rest).
-  void jointTorques(const Eigen::VectorXd& x, Eigen::Matrix3Xd& torque);
-
  private:
   bool solve(const Eigen::VectorXd& x, const EndInputs& ends);
   void kinematics(const Eigen::VectorXd& x, const EndInputs& ends);
@@ -146,7 +142,7 @@ class ChainDynamics {
 
   // Workspace (sized once).
   Eigen::Matrix3Xd u_, omega_, base_pos_, base_vel_, known_acc_, beta_;
-  Eigen::Matrix3Xd force_, moment_, drag_force_, drag_moment_, inertial_force_, inertial_moment_;
+  Eigen::Matrix3Xd force_, moment_, inertial_force_, inertial_moment_;
   Eigen::Matrix3Xd torque_, axis_acc_;
   Matrix3dVector tensor_;                ///< A_k = m' I + m_a' (I - u u^T) per length [kg/m]
   Matrix3dVector outboard_;              ///< B_k = sum_{j>k} l_j A_j + load [kg]
