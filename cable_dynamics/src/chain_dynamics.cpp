@@ -28,6 +28,27 @@ inline double angleOverSine(double beta, double sine) {
 
 inline double wrapToPi(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
+/// Geometry of the bending model's joint between axes `prev` and `axis` with vertical twists sigma_prev
+/// and sigma: the bend angle and the twist after parallel transport, tau = sigma - sigma_prev - Omega,
+/// Omega the solid angle of the spherical triangle (down, prev, axis) (docs/MODEL.md section 5).
+struct JointGeometry {
+  Eigen::Vector3d cross;  ///< prev x axis
+  double cosine, sine;    ///< of the bend angle
+  double bend, twist;     ///< [rad]
+};
+
+inline JointGeometry jointGeometry(const Eigen::Vector3d& prev, const Eigen::Vector3d& axis, double sigma,
+                                   double sigma_prev) {
+  JointGeometry g;
+  g.cross = prev.cross(axis);
+  g.cosine = prev.dot(axis);
+  g.sine = g.cross.norm();
+  g.bend = std::atan2(g.sine, g.cosine);
+  const double holonomy = -2.0 * std::atan2(kDown.dot(g.cross), 1.0 + prev.z() + axis.z() + g.cosine);
+  g.twist = sigma - sigma_prev - holonomy;
+  return g;
+}
+
 /// Unit vectors of the paper's Euler angles for a link at elevation te and azimuth psi:
 /// n = (cos psi, -sin psi, 0) (the elevation axis, up to sign), e = du/dte.
 inline void eulerAxes(double te, double psi, Eigen::Vector3d& n, Eigen::Vector3d& e) {
@@ -604,18 +625,13 @@ void ChainDynamics::bendingSpringTorques(const Eigen::VectorXd& x) {
   for (int k = 0; k < n_; ++k) {
     const Eigen::Vector3d prev = k > 0 ? Eigen::Vector3d(u_.col(k - 1)) : kDown;
     const Eigen::Vector3d axis = u_.col(k);
-    const double twist_prev = k > 0 ? x(StateLayout::twist(k - 1)) : 0.0;
-    const Eigen::Vector3d cross = prev.cross(axis);
-    const double cosine = prev.dot(axis), sine = cross.norm();
-    const double bend = std::atan2(sine, cosine);
+    const JointGeometry g =
+        jointGeometry(prev, axis, x(StateLayout::twist(k)), k > 0 ? x(StateLayout::twist(k - 1)) : 0.0);
     // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
-    const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * angleOverSine(bend, sine) * cross;
-    // Twist after parallel transport: tau = sigma_k - sigma_{k-1} - Omega (docs/MODEL.md section 5);
-    // a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
-    const double holonomy = -2.0 * std::atan2(kDown.dot(cross), 1.0 + prev.z() + axis.z() + cosine);
-    const double twist = x(StateLayout::twist(k)) - twist_prev - holonomy;
-    const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + cosine);
-    const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * twist * mean_axis;
+    const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * angleOverSine(g.bend, g.sine) * g.cross;
+    // Twist: a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
+    const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + g.cosine);
+    const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
     // Dampers on the relative angular velocity: across the mean axis (bending) and about it (twist).
     const Eigen::Vector3d relative = omega_.col(k) - (k > 0 ? Eigen::Vector3d(omega_.col(k - 1)) : Eigen::Vector3d::Zero());
     const Eigen::Vector3d direction = (prev + axis).normalized();
@@ -647,12 +663,9 @@ double ChainDynamics::elasticEnergy(const Eigen::VectorXd& x) {
   for (int k = 0; k < n_; ++k) {
     const Eigen::Vector3d prev = k > 0 ? Eigen::Vector3d(x.segment<3>(StateLayout::axis(k - 1)).normalized()) : kDown;
     const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k)).normalized();
-    const Eigen::Vector3d cross = prev.cross(axis);
-    const double cosine = prev.dot(axis);
-    const double bend = std::atan2(cross.norm(), cosine);
-    const double holonomy = -2.0 * std::atan2(kDown.dot(cross), 1.0 + prev.z() + axis.z() + cosine);
-    const double twist = x(StateLayout::twist(k)) - (k > 0 ? x(StateLayout::twist(k - 1)) : 0.0) - holonomy;
-    energy += 0.5 * p.stiffness_elevation(k) * bend * bend + 0.5 * p.stiffness_torsion(k) * twist * twist;
+    const JointGeometry g =
+        jointGeometry(prev, axis, x(StateLayout::twist(k)), k > 0 ? x(StateLayout::twist(k - 1)) : 0.0);
+    energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
   }
   return energy;
 }
