@@ -39,6 +39,12 @@ add_rostest(test/load_config.test)
 catkin_add_gtest(test_chain_dynamics test/test_chain_dynamics.cpp)
 target_link_libraries(test_chain_dynamics cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
+catkin_add_gtest(test_link_drag test/test_link_drag.cpp)
+target_link_libraries(test_link_drag cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+catkin_add_gtest(test_azimuth_tracker test/test_azimuth_tracker.cpp)
+target_link_libraries(test_azimuth_tracker cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
 catkin_add_gtest(test_simulator test/test_simulator.cpp)
 target_link_libraries(test_simulator cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 

@@ -27,7 +27,17 @@ double stepNanoseconds(cable_dynamics::CableSimulator& sim, double target_second
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  // Optional argument: the sizes, comma separated (default 10,30,100,300,1000).
+  std::vector<int> sizes = {10, 30, 100, 300, 1000};
+  if (argc > 1) {
+    sizes.clear();
+    for (std::string list = argv[1]; !list.empty();) {
+      const size_t comma = list.find(',');
+      sizes.push_back(std::stoi(list.substr(0, comma)));
+      list = comma == std::string::npos ? "" : list.substr(comma + 1);
+    }
+  }
   const char* const config =
       "cable: {links: 1, length: 50.0, diameter: 0.025, mass_per_length: 0.6}\n"
       "load: {mass: 10.0, volume: 0.005, drag_area: 0.2}\n"
@@ -36,7 +46,7 @@ int main() {
   std::printf("\n5) cable_dynamics with full fluid forces (water, 1 m/s current, drag at 3 Gauss points per link,\n"
               "   added mass, 10 kg load), RK4, dt = 1 ms: wall time per step [ns], median of 3 interleaved\n");
   std::printf("%-6s %14s %14s %10s\n", "n", "paper", "recursive", "ratio");
-  for (int n : {10, 30, 100, 300, 1000}) {
+  for (int n : sizes) {
     std::vector<double> dense_times, recursive_times;
     for (int rep = 0; rep < 3; ++rep) {
       for (const char* formulation : {"recursive", "paper"}) {

@@ -161,13 +161,13 @@ bool CableSimulator::advance(double h) {
 bool CableSimulator::acceptable(double balance_before, double scale_before) {
   const int n = links();
   for (int k = 0; k < n; ++k) {
-    Eigen::Ref<Eigen::VectorXd> axis = x_.segment(StateLayout::axis(k), 3);
-    const double norm = axis.norm();
+    auto axis = x_.segment<3>(StateLayout::axis(k));
+    const double norm = std::sqrt(axis.squaredNorm());
     if (!std::isfinite(norm) || norm < 0.5) return false;
-    axis /= norm;  // back onto the unit sphere
-    if (!(x_.segment<3>(StateLayout::omega(k)).norm() < omega_limit_)) return false;
+    axis *= 1.0 / norm;  // back onto the unit sphere
+    if (!(x_.segment<3>(StateLayout::omega(k)).squaredNorm() < omega_limit_ * omega_limit_)) return false;
   }
-  if (!x_.allFinite()) return false;
+  if (!std::isfinite(x_.sum())) return false;  // the twists and the energy accumulators
   // Kinetic + potential + elastic + dissipated - work input stays constant up to RK4's local error
   // (~1e-10 of the energy scale per step in the presets); an unstable mode shows as energy created.
   // The semi-implicit step balances energy only to first order (its power terms are taken at the start

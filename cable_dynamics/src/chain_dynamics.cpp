@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include "cable_dynamics/hot_path.h"
 #include "cable_dynamics/paper_model.h"
 
 namespace cable_dynamics {
@@ -25,6 +26,10 @@ inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
 inline double angleOverSine(double beta, double sine) {
   return beta < 1e-4 ? 1.0 + beta * beta / 6.0 : beta / sine;
 }
+
+/// true when every entry is finite: one vectorized sum instead of a test per entry (a NaN or an
+/// infinity anywhere makes the sum NaN or infinite; so would a sum beyond 1e308, no valid state either).
+inline bool allFinite(const Eigen::VectorXd& v) { return std::isfinite(v.sum()); }
 
 inline double wrapToPi(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
@@ -61,18 +66,16 @@ inline void eulerAxes(double te, double psi, Eigen::Vector3d& n, Eigen::Vector3d
 ChainDynamics::ChainDynamics(const CableParams& params)
     : n_(params.links),
       props_(deriveLinkProperties(params)),
+      azimuths_(params.links),
       stiffness_model_(params.stiffness.model),
       current_(params.fluid),
       density_(params.fluid.density),
       diameter_(params.diameter),
-      drag_normal_(params.fluid.drag_normal),
-      drag_tangential_(params.fluid.drag_tangential),
+      drag_(params.fluid, params.diameter),
       load_drag_area_(params.load.drag_area),
       load_coupling_stiffness_(params.load.coupling_stiffness),
-      load_coupling_damping_(params.load.coupling_damping),
-      drag_points_(params.fluid.drag_points) {
+      load_coupling_damping_(params.load.coupling_damping) {
   const int n = n_;
-  gaussLegendreUnit(drag_points_, gauss_nodes_, gauss_weights_);
   const double radius = 0.5 * diameter_;
   mass_per_length_ = props_.mass.cwiseQuotient(props_.length);
   added_per_length_ = Eigen::VectorXd::Constant(n, params.fluid.added_mass * density_ * M_PI * radius * radius);
@@ -81,11 +84,10 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   thick_transverse_ = props_.mass * (radius * radius / 4.0);
   load_inertia_ = props_.load_mass + params.load.added_mass;
   load_weight_ = props_.gravity * props_.load_submerged_mass;
-  psi_reference_ = Eigen::VectorXd::Zero(n);
   paper_psi_ = Eigen::VectorXd::Zero(n);
 
   for (Eigen::Matrix3Xd* m : {&u_, &omega_, &base_pos_, &base_vel_, &known_acc_, &beta_, &force_, &moment_,
-                              &inertial_force_, &inertial_moment_, &torque_,
+                              &inertial_force_, &inertial_moment_, &torque_, &axis_rate_,
                               &axis_acc_, &joint_force_, &damping_torque_, &spring_torque_, &link_base_acc_}) {
     m->setZero(3, n);
   }
@@ -99,11 +101,7 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   recursive_ = params.simulation.formulation == "recursive";
   has_springs_ = props_.stiffness_elevation.any() || props_.stiffness_azimuth.any() || props_.stiffness_torsion.any() ||
                  props_.damping_elevation.any() || props_.damping_azimuth.any() || props_.damping_torsion.any();
-  articulated_.assign(n, Eigen::Matrix<double, 6, 6>::Zero());
-  articulated_bias_.assign(n, Eigen::Matrix<double, 6, 1>::Zero());
-  joint_u_.assign(n, Eigen::Matrix<double, 6, 3>::Zero());
-  joint_d_inverse_.assign(n, Eigen::Matrix3d::Zero());
-  joint_rhs_.setZero(3, n);
+  allocateRecursion();
   paper_q_.setZero(3 * n);
   paper_qd_.setZero(3 * n);
   lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(3 * n);
@@ -111,50 +109,55 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   llt_ = Eigen::LLT<Eigen::MatrixXd>(3 * n);
 }
 
-void ChainDynamics::kinematics(const Eigen::VectorXd& x, const EndInputs& ends) {
+CABLE_HOT_PATH void ChainDynamics::kinematics(const Eigen::VectorXd& x, const EndInputs& ends) {
+  // Each link's values are formed in locals and stored once (reading back a column just written
+  // stalls the store-to-load forwarding of a 3-vector).
   Eigen::Vector3d pos = ends.base_position, vel = ends.base_velocity, acc = ends.base_acceleration;
   for (int k = 0; k < n_; ++k) {
     // Links are unit vectors up to the integrator's drift: use the normalized axis.
-    u_.col(k) = x.segment<3>(StateLayout::axis(k)).normalized();
-    omega_.col(k) = x.segment<3>(StateLayout::omega(k));
+    const Eigen::Vector3d raw_axis = x.segment<3>(StateLayout::axis(k));
+    const Eigen::Vector3d axis = raw_axis * (1.0 / std::sqrt(raw_axis.squaredNorm()));
+    const Eigen::Vector3d omega = x.segment<3>(StateLayout::omega(k));
+    const Eigen::Vector3d axis_rate = omega.cross(axis);
+    const Eigen::Vector3d beta = omega.cross(axis_rate);  // centripetal part of u''
+    u_.col(k) = axis;
+    omega_.col(k) = omega;
+    axis_rate_.col(k) = axis_rate;
+    beta_.col(k) = beta;
     base_pos_.col(k) = pos;
     base_vel_.col(k) = vel;
     known_acc_.col(k) = acc;
-    const Eigen::Vector3d axis_rate = omega_.col(k).cross(u_.col(k));
-    beta_.col(k) = omega_.col(k).cross(axis_rate);  // centripetal part of u''
     const double l = props_.length(k);
-    pos += l * u_.col(k);
+    pos += l * axis;
     vel += l * axis_rate;
-    acc += l * beta_.col(k);
+    acc += l * beta;
   }
   tip_pos_ = pos;
   tip_vel_ = vel;
   tip_known_acc_ = acc;
 }
 
-void ChainDynamics::externalForces(const EndInputs& ends) {
+CABLE_HOT_PATH void ChainDynamics::externalForces(const EndInputs& ends) {
   drag_power_ = 0.0;
+  const bool uniform = current_.uniform();
   for (int k = 0; k < n_; ++k) {
-    const double l = props_.length(k);
-    const Eigen::Vector3d axis = u_.col(k), axis_rate = omega_.col(k).cross(axis);
-    // Submerged weight, uniform along the link: total and first moment about the base end.
-    Eigen::Vector3d f = weight_(k) * kDown, m = 0.5 * l * weight_(k) * kDown;
-    Eigen::Vector3d fd = Eigen::Vector3d::Zero(), md = Eigen::Vector3d::Zero();
+    const double l = props_.length(k), w = weight_(k);
+    const Eigen::Vector3d axis = u_.col(k), axis_rate = axis_rate_.col(k), velocity = base_vel_.col(k);
+    // Submerged weight, uniform along the link: total and first moment about the base end, plus drag.
+    Eigen::Vector3d f(0.0, 0.0, w), m(0.0, 0.0, 0.5 * l * w);
     if (density_ > 0.0) {
-      // Drag, distributed along the link: Gauss-Legendre over the arc length s in [0, l].
-      for (int i = 0; i < drag_points_; ++i) {
-        const double s = gauss_nodes_[i] * l, w = gauss_weights_[i] * l;
-        const Eigen::Vector3d point = base_pos_.col(k) + s * axis;
-        const Eigen::Vector3d velocity = base_vel_.col(k) + s * axis_rate;
-        const Eigen::Vector3d drag = morisonDragPerLength(axis, velocity, current_.at(point.z()), density_,
-                                                          diameter_, drag_normal_, drag_tangential_);
-        fd += w * drag;
-        md += w * s * drag;
+      Eigen::Vector3d fd, md;
+      if (uniform) {
+        drag_.uniform(current_.uniformValue(), l, velocity, axis, axis_rate, fd, md);
+      } else {
+        drag_.pointwise(current_, l, base_pos_.col(k), velocity, axis, axis_rate, fd, md);
       }
+      f += fd;
+      m += md;
+      drag_power_ += fd.dot(velocity) + md.dot(axis_rate);
     }
-    force_.col(k) = f + fd;
-    moment_.col(k) = m + md;
-    drag_power_ += fd.dot(base_vel_.col(k)) + md.dot(axis_rate);
+    force_.col(k) = f;
+    moment_.col(k) = m;
   }
   // The load: weight, drag, and the PD coupling to its anchor or to the ROV.
   load_external_ = load_weight_ * kDown;
@@ -177,106 +180,6 @@ void ChainDynamics::inertiaTensors() {
   for (int k = 0; k < n_; ++k) {
     const Eigen::Vector3d axis = u_.col(k);
     tensor_[k] = mass_per_length_(k) * identity + added_per_length_(k) * (identity - axis * axis.transpose());
-  }
-}
-
-void ChainDynamics::solveRecursive() {
-  // Articulated-body recursion (Featherstone) for a chain of links on spherical joints. Every quantity
-  // sits at a link's base end with axes parallel to the paper frame; spatial vectors are [linear; angular].
-  // The joint springs and dampers enter as external torques, so every joint is free (its torque is 0).
-  //
-  // Spin: a link's spin acceleration (along its own axis) is decoupled from everything else, since a
-  // spherical joint passes no torque about an axis through it and [u]x u = 0 in every coupling block:
-  // I_P (omega'.u) = (net external torque).u. The polar inertia is tiny beside the rest (m r^2/2 against
-  // m l^2/3), and with it the joint blocks D are ill-conditioned enough that round-off grows link by
-  // link. So the recursion runs with a stand-in spin inertia of the size of the transverse one, and the
-  // spin acceleration it finds, torque.u / stand-in, is rescaled to torque.u / I_P at the end.
-  using Matrix6d = Eigen::Matrix<double, 6, 6>;
-  using Vector6d = Eigen::Matrix<double, 6, 1>;
-  const int n = n_;
-  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
-  for (int k = 0; k < n; ++k) {
-    const double l = props_.length(k);
-    const Eigen::Vector3d axis = u_.col(k), omega = omega_.col(k), beta = beta_.col(k);
-    const Eigen::Matrix3d ux = skew(axis), a = tensor_[k];
-    const Eigen::Matrix3d rotation = thick_transverse_(k) * (identity - axis * axis.transpose()) +
-                                     props_.inertia_polar(k) * axis * axis.transpose();
-    const Eigen::Matrix3d recursion_rotation =
-        rotation + (props_.inertia_transverse(k) - props_.inertia_polar(k)) * axis * axis.transpose();
-    // Inertia of the link about its base end: the translation integral of A over the length, plus the
-    // thickness rotation; its velocity terms (centripetal beta, gyroscopic) minus the external wrench.
-    // With A = m' I + m_a' (I - u u^T) and [u]x u = 0 the blocks simplify: A [u]x = (m' + m_a') [u]x and
-    // [u]x A [u]x = (m' + m_a') [u]x [u]x = -(m' + m_a') (I - u u^T).
-    const double across = mass_per_length_(k) + added_per_length_(k);  // [kg/m]
-    const Eigen::Matrix3d transverse = identity - axis * axis.transpose();
-    Matrix6d& inertia = articulated_[k];
-    inertia.topLeftCorner<3, 3>() = l * a;
-    inertia.topRightCorner<3, 3>() = -(0.5 * l * l * across) * ux;
-    inertia.bottomLeftCorner<3, 3>() = (0.5 * l * l * across) * ux;
-    inertia.bottomRightCorner<3, 3>() = (l * l * l / 3.0 * across) * transverse + recursion_rotation;
-    Vector6d& bias = articulated_bias_[k];
-    bias.head<3>() = (0.5 * l * l) * (a * beta) - force_.col(k);
-    bias.tail<3>() = (l * l * l / 3.0 * across) * axis.cross(beta) + omega.cross(rotation * omega) -
-                     axis.cross(moment_.col(k)) - torque_.col(k);
-    if (k == n - 1) {  // the load: a point mass at the far end
-      const Eigen::Vector3d r = l * axis;
-      const Eigen::Matrix3d rx = skew(r);
-      const double m = load_inertia_;
-      inertia.topLeftCorner<3, 3>() += m * identity;
-      inertia.topRightCorner<3, 3>() -= m * rx;
-      inertia.bottomLeftCorner<3, 3>() += m * rx;
-      inertia.bottomRightCorner<3, 3>() -= m * rx * rx;
-      const Eigen::Vector3d load_bias = m * l * beta - load_external_;
-      bias.head<3>() += load_bias;
-      bias.tail<3>() += r.cross(load_bias);
-    }
-  }
-  // Backward: fold each link's articulated inertia into its parent through the free spherical joint.
-  for (int k = n - 1; k >= 0; --k) {
-    const Matrix6d& ia = articulated_[k];
-    joint_u_[k] = ia.rightCols<3>();
-    const Eigen::Matrix3d d_inverse = ia.bottomRightCorner<3, 3>().inverse();
-    joint_d_inverse_[k] = 0.5 * (d_inverse + d_inverse.transpose());
-    joint_rhs_.col(k) = -articulated_bias_[k].tail<3>();
-    if (k == 0) break;
-    // What link k passes to its parent through the free spherical joint has no angular part (I^a S = 0):
-    // only an effective mass M and force f at joint k. Writing that structure out, rather than forming
-    // I^A - U D^-1 U^T in full, keeps the tiny polar inertia free of round-off from the large blocks.
-    const Eigen::Matrix3d coupling = joint_u_[k].topRows<3>();
-    Eigen::Matrix3d mass = ia.topLeftCorner<3, 3>() - coupling * joint_d_inverse_[k] * coupling.transpose();
-    // Keep it exactly symmetric: the recursion amplifies an antisymmetric round-off part about twofold per
-    // link (measured: a 100-link straight cable blew up within one step), the symmetric part not.
-    mass = 0.5 * (mass + mass.transpose()).eval();
-    const double l = props_.length(k - 1);
-    const Eigen::Vector3d force = articulated_bias_[k].head<3>() + mass * (l * beta_.col(k - 1)) +
-                                  coupling * (joint_d_inverse_[k] * joint_rhs_.col(k));
-    // Shift from joint k to joint k-1 (r = l u_{k-1}): [M, -M [r]x; [r]x M, -[r]x M [r]x] and [f; r x f].
-    const Eigen::Matrix3d rx = skew(l * u_.col(k - 1));
-    const Eigen::Matrix3d mass_rx = mass * rx;
-    articulated_[k - 1].topLeftCorner<3, 3>() += mass;
-    articulated_[k - 1].topRightCorner<3, 3>() -= mass_rx;
-    articulated_[k - 1].bottomLeftCorner<3, 3>() -= mass_rx.transpose();  // [r]x M = -(M [r]x)^T
-    articulated_[k - 1].bottomRightCorner<3, 3>() -= rx * mass_rx;
-    articulated_bias_[k - 1].head<3>() += force;
-    articulated_bias_[k - 1].tail<3>() += (l * u_.col(k - 1)).cross(force);
-  }
-  // Forward: accelerations from the base outwards.
-  Vector6d motion;
-  motion << known_acc_.col(0), Eigen::Vector3d::Zero();  // the base translates without turning
-  for (int k = 0; k < n; ++k) {
-    if (k > 0) {
-      const double l = props_.length(k - 1);
-      const Eigen::Vector3d alpha = motion.tail<3>();
-      motion.head<3>() += alpha.cross(l * u_.col(k - 1)) + l * beta_.col(k - 1);
-    }
-    const Eigen::Vector3d joint_acc = joint_d_inverse_[k] * (joint_rhs_.col(k) - joint_u_[k].transpose() * motion);
-    motion.tail<3>() += joint_acc;
-    rhs_.segment<3>(3 * k) = motion.tail<3>();
-  }
-  for (int k = 0; k < n; ++k) {  // the true spin accelerations (see above)
-    const Eigen::Vector3d axis = u_.col(k);
-    const double spin = rhs_.segment<3>(3 * k).dot(axis);
-    rhs_.segment<3>(3 * k) += (props_.inertia_transverse(k) / props_.inertia_polar(k) - 1.0) * spin * axis;
   }
 }
 
@@ -346,43 +249,36 @@ void ChainDynamics::jointForces() {
     const Eigen::Vector3d mean_acc = l * link_base_acc.col(k) + 0.5 * l * l * axis_acc_.col(k);
     outboard += tensor_[k] * mean_acc - force_.col(k);
     joint_force_.col(k) = outboard;
-    // Power of the added-mass force -m_a' P x'' against x' = v + s u' (both linear in s), integrated.
-    const Eigen::Vector3d axis = u_.col(k), axis_rate = omega_.col(k).cross(axis);
-    const Eigen::Matrix3d p = Eigen::Matrix3d::Identity() - axis * axis.transpose();
-    const Eigen::Vector3d a0 = p * link_base_acc.col(k), a1 = p * axis_acc_.col(k);
-    const Eigen::Vector3d v0 = base_vel_.col(k), v1 = axis_rate;
-    added_mass_power_ -= added_per_length_(k) * (l * a0.dot(v0) + 0.5 * l * l * (a0.dot(v1) + a1.dot(v0)) +
-                                                 (l * l * l / 3.0) * a1.dot(v1));
+    added_mass_power_ += addedMassPower(k, link_base_acc.col(k), axis_acc_.col(k));
   }
 }
 
-bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends) {
-  if (!x.allFinite()) return false;
+bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
+  if (!allFinite(x)) return false;
   kinematics(x, ends);
   externalForces(ends);
   computeJointTorques(x);
   if (recursive_) {
-    inertiaTensors();
-    solveRecursive();  // rhs_ holds the angular accelerations
+    solveRecursive(all_joint_forces);  // rhs_ holds the angular accelerations, and the forces are known
   } else {
     assembleForces();
     assembleMass();
     llt_.compute(mass_matrix_);
     if (llt_.info() != Eigen::Success) return false;
     llt_.solveInPlace(rhs_);  // rhs_ now holds the angular accelerations
+    jointForces();
   }
-  if (!rhs_.allFinite()) return false;
-  jointForces();
+  if (!allFinite(rhs_)) return false;
   input_power_ = joint_force_.col(0).dot(ends.base_velocity) + coupling_.dot(tip_vel_);
   return true;
 }
 
 bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& xdot) {
   assert(x.size() == stateSize() && xdot.size() == stateSize());
-  if (!solve(x, ends)) return false;
+  if (!solve(x, ends, false)) return false;
   for (int k = 0; k < n_; ++k) {
     const Eigen::Vector3d axis = u_.col(k), omega = omega_.col(k);
-    xdot.segment<3>(StateLayout::axis(k)) = omega.cross(axis);
+    xdot.segment<3>(StateLayout::axis(k)) = axis_rate_.col(k);
     // sigma = psi + phi: from omega = -psi' e_z - te' n - phi' u, omega.(e_z + u) = -(psi' + phi')(1 + cos te).
     const double denominator = 1.0 + axis.z();
     xdot(StateLayout::twist(k)) = denominator > 1e-12 ? -omega.dot(kDown + axis) / denominator : -omega.dot(axis);
@@ -396,7 +292,7 @@ bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, 
 }
 
 bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out) {
-  if (!solve(x, ends)) return false;
+  if (!solve(x, ends, true)) return false;
   const int n = n_;
   out.omega_rate = rhs_;
   out.ends.resize(3, n + 1);
@@ -502,7 +398,7 @@ void ChainDynamics::kineticAndPotential(double& kinetic, double& potential) cons
   potential = -load_weight_ * tip_pos_.z();
   for (int k = 0; k < n_; ++k) {
     const double l = props_.length(k), m = mass_per_length_(k);
-    const Eigen::Vector3d v = base_vel_.col(k), c = omega_.col(k).cross(u_.col(k));
+    const Eigen::Vector3d v = base_vel_.col(k), c = axis_rate_.col(k);
     kinetic += 0.5 * m * (l * v.squaredNorm() + l * l * v.dot(c) + (l * l * l / 3.0) * c.squaredNorm());
     const Eigen::Vector3d omega = omega_.col(k), axis = u_.col(k);
     const double spin = omega.dot(axis);
@@ -521,6 +417,7 @@ double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs
 }
 
 void ChainDynamics::computeJointTorques(const Eigen::VectorXd& x) {
+  if (stiffness_model_ == StiffnessModel::kPaper && !has_springs_) return;  // all zero since construction
   spring_torque_.setZero();
   damping_torque_.setZero();
   if (stiffness_model_ == StiffnessModel::kPaper) {
@@ -536,9 +433,8 @@ void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
   for (int k = 0; k < n_; ++k) {
     const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k));
     // Straight down the azimuth is undefined: keep the previous one (as paperCoordinates() does).
-    if (std::hypot(axis.x(), axis.y()) > kVerticalSine * axis.norm()) {
-      psi_reference_(k) += wrapToPi(std::atan2(axis.x(), axis.y()) - psi_reference_(k));
-    }
+    const double horizontal_squared = axis.x() * axis.x() + axis.y() * axis.y();
+    if (horizontal_squared > kVerticalSine * kVerticalSine * axis.squaredNorm()) azimuths_.follow(k, axis.x(), axis.y());
   }
 }
 
@@ -549,8 +445,9 @@ void ChainDynamics::paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& 
     const Eigen::Vector3d omega = x.segment<3>(StateLayout::omega(k));
     const double horizontal = std::hypot(axis.x(), axis.y());
     const double te = std::atan2(horizontal, axis.z());
-    double psi = psi_reference_(k);
-    if (horizontal > kVerticalSine) psi += wrapToPi(std::atan2(axis.x(), axis.y()) - psi_reference_(k));
+    const double reference = azimuths_.reference(k);
+    double psi = reference;
+    if (horizontal > kVerticalSine) psi += wrapToPi(std::atan2(axis.x(), axis.y()) - reference);
     const double phi = x(StateLayout::twist(k)) - psi;
     Eigen::Vector3d nvec, evec;
     eulerAxes(te, psi, nvec, evec);

@@ -17,8 +17,10 @@
 #include <Eigen/Core>
 #include <Eigen/StdVector>
 
+#include "cable_dynamics/azimuth_tracker.h"
 #include "cable_dynamics/cable_params.h"
 #include "cable_dynamics/fluid.h"
+#include "cable_dynamics/symmetric3.h"
 
 namespace cable_dynamics {
 
@@ -72,7 +74,7 @@ class ChainDynamics {
 
   /// Sets the paper azimuths (n) [rad] near which the paper springs read psi_k (kept continuous
   /// by the simulator between steps; only the paper stiffness model uses them).
-  void setAzimuthReference(const Eigen::Ref<const Eigen::VectorXd>& psi) { psi_reference_ = psi; }
+  void setAzimuthReference(const Eigen::VectorXd& psi) { azimuths_.reset(psi); }
 
   /// Moves the azimuth reference to the state's azimuths (unwrapped against it), after each accepted step.
   void followAzimuths(const Eigen::VectorXd& x);
@@ -106,11 +108,17 @@ class ChainDynamics {
   void stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const;
 
  private:
-  bool solve(const Eigen::VectorXd& x, const EndInputs& ends);
+  bool solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces);
   void kinematics(const Eigen::VectorXd& x, const EndInputs& ends);
   void externalForces(const EndInputs& ends);
   void inertiaTensors();  ///< A_k per link (O(n))
-  void solveRecursive();  ///< angular accelerations into rhs_ by the articulated-body recursion (O(n))
+  /// Angular accelerations into rhs_, the load force, the added-mass power and the joint forces (all of
+  /// them, or only joint 0's, which the input power needs) by the articulated-body recursion (O(n);
+  /// chain_recursive.cpp).
+  void solveRecursive(bool all_joint_forces);
+  void allocateRecursion();
+  /// Power of the added-mass force on link k [W], from its base-end and axis accelerations.
+  double addedMassPower(int k, const Eigen::Vector3d& base_acc, const Eigen::Vector3d& axis_acc) const;
   void assembleForces();  ///< tensors, outboard sums and the right-hand side rhs_ (O(n))
   void assembleMass();    ///< the mass matrix (O(n^2)), after assembleForces()
   /// Generalized forces (rhs of M omega' = rhs) at x: O(n), no mass matrix.
@@ -126,10 +134,9 @@ class ChainDynamics {
   LinkProperties props_;
   StiffnessModel stiffness_model_;
   CurrentField current_;
-  double density_, diameter_, drag_normal_, drag_tangential_;
+  double density_, diameter_;
+  LinkDrag drag_;
   double load_drag_area_, load_coupling_stiffness_, load_coupling_damping_;
-  int drag_points_;
-  double gauss_nodes_[8], gauss_weights_[8];
 
   // Per link constants.
   Eigen::VectorXd mass_per_length_;      ///< [kg/m]
@@ -138,10 +145,10 @@ class ChainDynamics {
   Eigen::VectorXd thick_transverse_;     ///< thickness part of I_T, m r^2/4 [kg m^2]
   double load_inertia_;                  ///< load mass plus its added mass [kg]
   double load_weight_;                   ///< [N]
-  Eigen::VectorXd psi_reference_;
+  AzimuthTracker azimuths_;              ///< continuous paper azimuths, followed after each accepted step
 
   // Workspace (sized once).
-  Eigen::Matrix3Xd u_, omega_, base_pos_, base_vel_, known_acc_, beta_;
+  Eigen::Matrix3Xd u_, omega_, axis_rate_, base_pos_, base_vel_, known_acc_, beta_;  ///< axis_rate_: u' = omega x u
   Eigen::Matrix3Xd force_, moment_, inertial_force_, inertial_moment_;
   Eigen::Matrix3Xd torque_, axis_acc_;
   Matrix3dVector tensor_;                ///< A_k = m' I + m_a' (I - u u^T) per length [kg/m]
@@ -164,12 +171,35 @@ class ChainDynamics {
   bool skip_damping_ = false;  ///< generalized forces without the dampers (the stiffness Jacobian)
   bool recursive_ = true;
   bool has_springs_ = false;  ///< any joint spring or damper at all
-  // Articulated-body workspace: per link, at its base end with world-parallel axes, [linear; angular].
-  std::vector<Eigen::Matrix<double, 6, 6>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 6>>> articulated_;
-  std::vector<Eigen::Matrix<double, 6, 1>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 1>>> articulated_bias_;
-  std::vector<Eigen::Matrix<double, 6, 3>, Eigen::aligned_allocator<Eigen::Matrix<double, 6, 3>>> joint_u_;
-  Matrix3dVector joint_d_inverse_;
-  Eigen::Matrix3Xd joint_rhs_;
+  /// What the recursion's backward pass leaves for its forward pass, per link k (chain_recursive.cpp).
+  struct ArticulatedLink {
+    // Known before the recursion (each link on its own).
+    Eigen::Vector3d e1, e2;       ///< basis of the plane normal to u_k, e1 x e2 = u_k
+    Symmetric3 own_mass;          ///< l A, the link's translational inertia [kg]
+    Eigen::Vector3d own_force;    ///< l^2/2 A beta - F: the link's bias force [N]
+    Eigen::Vector3d own_moment;   ///< l^3/3 (m' + m_a') beta - first moment of F [N m]
+    double q1, q2;                ///< gyroscopic torque minus the joint torque, on e1 and e2 [N m]
+    Eigen::Vector3d added_base;   ///< added-mass power = added_base.a_k + added_axis.u_k'' [kg/s]
+    Eigen::Vector3d added_axis;   ///< [kg m/s]
+    // From the backward pass.
+    Eigen::Vector3d x1, x2;       ///< X = W S^-1: transverse accelerations y = y_g - X^T a_k [1/m]
+    double y1, y2;                ///< y_g = -S^-1 g, the transverse accelerations at a_k = 0 [rad/s^2]
+    Symmetric3 mass;              ///< M_k, effective mass of the outboard part at joint k [kg]
+    Eigen::Vector3d force;        ///< f_k, its bias force [N]
+  };
+  std::vector<ArticulatedLink> articulated_;
+  /// Per-link constants of the recursion, computed once [SI].
+  struct LinkConstants {
+    double length;          ///< l [m]
+    double across;          ///< m' + m_a', mass per length across the link [kg/m]
+    double added;           ///< m_a', normal added mass per length [kg/m]
+    double own_transverse;  ///< c1 = l^3/3 (m' + m_a') + thickness inertia: transverse, about the base end [kg m^2]
+    double half_moment;     ///< l^2/2 (m' + m_a') [kg m]
+    double third_moment;    ///< l^3/3 (m' + m_a') [kg m^2]
+    double inverse_polar;   ///< 1 / I_P [1/(kg m^2)]
+    double gyroscopic;      ///< I_P - thickness inertia [kg m^2]
+  };
+  std::vector<LinkConstants> constants_;
   Eigen::VectorXd paper_q_, paper_qd_;  ///< (3n) paper coordinates and rates for the paper springs
 };
 

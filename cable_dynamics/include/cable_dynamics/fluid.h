@@ -2,6 +2,9 @@
 /// \file
 /// \brief The water around the cable: current (uniform or a depth profile) and Morison drag.
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "cable_dynamics/cable_params.h"
@@ -19,6 +22,12 @@ class CurrentField {
   /// Replaces the field by a uniform current given in the world frame [m/s] (e.g. from a topic).
   void setUniformWorld(const Eigen::Vector3d& current_world);
 
+  /// true when the current is the same at every depth (no profile).
+  bool uniform() const { return depth_.size() == 0; }
+
+  /// The current when uniform() [m/s].
+  const Eigen::Vector3d& uniformValue() const { return uniform_; }
+
  private:
   Eigen::Vector3d uniform_;                   ///< paper frame [m/s]
   Eigen::VectorXd depth_;                     ///< (rows) [m]
@@ -33,7 +42,77 @@ Eigen::Vector3d morisonDragPerLength(const Eigen::Vector3d& axis, const Eigen::V
                                      const Eigen::Vector3d& current, double density, double diameter,
                                      double drag_normal, double drag_tangential);
 
+/// Power of the normal added-mass force on a link [W] as base_weight.a + axis_weight.u'' for its base-end
+/// acceleration a and axis acceleration u'': the force per length -m_a' P x'' (P = I - u u^T) against
+/// the velocity x' = v + s u', integrated over the length l. With x'' = a + s u'' and P x' = P v + s u'
+/// (u' is normal to u) it is -m_a' [l a.Pv + l^2/2 (a.u' + u''.Pv) + l^3/3 u''.u'].
+/// added_per_length m_a' [kg/m], l [m], unit axis u, axis_rate u' [1/s], velocity v [m/s].
+EIGEN_ALWAYS_INLINE void addedMassPowerWeights(double added_per_length, double l, const Eigen::Vector3d& u,
+                                               const Eigen::Vector3d& axis_rate, const Eigen::Vector3d& velocity,
+                                               Eigen::Vector3d& base_weight, Eigen::Vector3d& axis_weight) {
+  const Eigen::Vector3d normal_velocity = velocity - u.dot(velocity) * u;
+  base_weight = -added_per_length * (l * normal_velocity + (0.5 * l * l) * axis_rate);
+  axis_weight = -added_per_length * ((0.5 * l * l) * normal_velocity + (l * l * l / 3.0) * axis_rate);
+}
+
 /// Gauss-Legendre nodes on [0, 1] and their weights (sum 1), for 1 to 8 points.
 void gaussLegendreUnit(int points, double* nodes, double* weights);
+
+/// Morison drag integrated along straight links by Gauss-Legendre quadrature (fluid.drag_points points).
+class LinkDrag {
+ public:
+  LinkDrag(const FluidParams& fluid, double diameter);
+
+  /// Drag on a link of length l [m] with base end at `base` [m] moving at `velocity` [m/s], unit axis u
+  /// turning at u' = `axis_rate` [1/s]: the total force [N] and its first moment about the base end,
+  /// the integral of s f(s) ds [N m] (the torque about the base end is u x moment).
+  void onLink(const CurrentField& current, double l, const Eigen::Vector3d& base, const Eigen::Vector3d& velocity,
+              const Eigen::Vector3d& axis, const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
+              Eigen::Vector3d& moment) const {
+    if (current.uniform()) {
+      uniform(current.uniformValue(), l, velocity, axis, axis_rate, force, moment);
+    } else {
+      pointwise(current, l, base, velocity, axis, axis_rate, force, moment);
+    }
+  }
+
+  /// onLink() for a current that is the same along the whole link [m/s]. With one current c the
+  /// relative water velocity is c - v - s u', and u' is normal to u: its tangential part (c - v).u is the
+  /// same at every s, and its normal part is n0 - s u' with |n0 - s u'|^2 quadratic in s. So the
+  /// quadrature needs one square root per point, and the force and moment are n0 and u' weighted by
+  /// sums of w |n(s)|, w s |n(s)| and w s^2 |n(s)|. Inline: it runs for every link in every evaluation.
+  EIGEN_ALWAYS_INLINE void uniform(const Eigen::Vector3d& current, double l, const Eigen::Vector3d& velocity, const Eigen::Vector3d& axis,
+               const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force, Eigen::Vector3d& moment) const {
+    const Eigen::Vector3d relative = current - velocity;
+    const double along = relative.dot(axis);
+    const Eigen::Vector3d normal = relative - along * axis;
+    const double c0 = normal.squaredNorm(), c1 = -2.0 * normal.dot(axis_rate), c2 = axis_rate.squaredNorm();
+    double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0;
+    for (int i = 0; i < points_; ++i) {
+      const double s = nodes_[i] * l, w = weights_[i] * l;
+      const double speed_squared = c0 + s * (c1 + s * c2);  // |n(s)|^2; round-off can dip below 0
+      const double speed = std::sqrt(std::max(speed_squared, 0.0));
+      sum0 += w * speed;
+      sum1 += (w * s) * speed;
+      sum2 += (w * s * s) * speed;
+    }
+    const double tangential = tangential_coefficient_ * std::abs(along) * along * l;  // [N]
+    force = normal_coefficient_ * (sum0 * normal - sum1 * axis_rate) + tangential * axis;
+    moment = normal_coefficient_ * (sum1 * normal - sum2 * axis_rate) + (0.5 * l * tangential) * axis;
+  }
+
+  /// The same quadrature evaluated point by point with the current at each point's depth (what onLink()
+  /// does for a depth profile; public so that tests can hold the uniform shortcut against it).
+  void pointwise(const CurrentField& current, double l, const Eigen::Vector3d& base, const Eigen::Vector3d& velocity,
+                 const Eigen::Vector3d& axis, const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
+                 Eigen::Vector3d& moment) const;
+
+ private:
+  double density_, diameter_, drag_normal_, drag_tangential_;
+  double normal_coefficient_;      ///< 1/2 rho C_n d [kg/m^3 m], times |v_n| v_n per length
+  double tangential_coefficient_;  ///< 1/2 rho C_t pi d [kg/m^3 m], times |v_t| v_t per length
+  int points_;
+  double nodes_[8], weights_[8];
+};
 
 }  // namespace cable_dynamics

@@ -1,0 +1,91 @@
+// The uniform-current shortcut of the link drag (one square root per Gauss point) against the
+// point-by-point Morison quadrature, and the quadrature against a fine midpoint rule of the same
+// integrand (an integration written here independently of fluid.cpp's).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <Eigen/Geometry>
+
+#include "cable_dynamics/fluid.h"
+
+namespace cd = cable_dynamics;
+
+namespace {
+
+cd::FluidParams water(int points) {
+  cd::FluidParams fluid;
+  fluid.density = 1025.0;       // [kg/m^3]
+  fluid.drag_normal = 1.2;      // [-]
+  fluid.drag_tangential = 0.01; // [-]
+  fluid.drag_points = points;
+  fluid.current = Eigen::Vector3d(0.7, -0.2, 0.1);  // [m/s], world frame
+  return fluid;
+}
+
+struct LinkMotion {
+  Eigen::Vector3d base, velocity, axis, axis_rate;
+};
+
+LinkMotion randomMotion(std::mt19937& rng) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  LinkMotion m;
+  m.base = Eigen::Vector3d(normal(rng), normal(rng), 5.0 + normal(rng));
+  m.velocity = Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+  m.axis = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+  const Eigen::Vector3d omega(normal(rng), normal(rng), normal(rng));
+  m.axis_rate = omega.cross(m.axis);
+  return m;
+}
+
+}  // namespace
+
+TEST(LinkDrag, UniformShortcutEqualsPointwiseQuadrature) {
+  // The shortcut rewrites the same Gauss sum; only round-off may differ (1e-12 of the force scale).
+  std::mt19937 rng(7);
+  for (int points = 1; points <= 8; ++points) {
+    const cd::FluidParams fluid = water(points);
+    const cd::LinkDrag drag(fluid, 0.025);
+    const cd::CurrentField current(fluid);
+    ASSERT_TRUE(current.uniform());
+    for (int trial = 0; trial < 50; ++trial) {
+      const LinkMotion m = randomMotion(rng);
+      const double l = 0.5 + trial * 0.1;  // [m]
+      Eigen::Vector3d f_fast, m_fast, f_slow, m_slow;
+      drag.uniform(current.uniformValue(), l, m.velocity, m.axis, m.axis_rate, f_fast, m_fast);
+      drag.pointwise(current, l, m.base, m.velocity, m.axis, m.axis_rate, f_slow, m_slow);
+      const double scale = f_slow.norm() + 1e-3;
+      EXPECT_LT((f_fast - f_slow).norm(), 1e-12 * scale) << "points " << points;
+      EXPECT_LT((m_fast - m_slow).norm(), 1e-12 * scale * l) << "points " << points;
+    }
+  }
+}
+
+TEST(LinkDrag, GaussQuadratureMatchesFineMidpointRule) {
+  // 8 Gauss points against 20000 midpoint cells of 1/2 rho d (C_n |v_n| v_n + C_t pi |v_t| v_t),
+  // v = current - (v0 + s u'). The integrand is smooth here (the normal relative speed stays away from
+  // zero), so both converge; 1e-6 relative is far above either's error.
+  const cd::FluidParams fluid = water(8);
+  const double d = 0.025, l = 2.0;
+  const cd::LinkDrag drag(fluid, d);
+  const cd::CurrentField current(fluid);
+  const Eigen::Vector3d c = current.uniformValue();
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.3, 0.1, 0.9).normalized();
+  const Eigen::Vector3d velocity(-0.4, 0.2, 0.0), axis_rate = Eigen::Vector3d(0.0, 0.5, 0.2).cross(axis);
+  Eigen::Vector3d force, moment;
+  drag.uniform(c, l, velocity, axis, axis_rate, force, moment);
+  Eigen::Vector3d f_ref = Eigen::Vector3d::Zero(), m_ref = Eigen::Vector3d::Zero();
+  const int cells = 20000;
+  for (int i = 0; i < cells; ++i) {
+    const double s = (i + 0.5) * l / cells, ds = l / cells;
+    const Eigen::Vector3d v = c - (velocity + s * axis_rate);
+    const Eigen::Vector3d vt = v.dot(axis) * axis, vn = v - vt;
+    const Eigen::Vector3d per_length =
+        0.5 * fluid.density * d * (fluid.drag_normal * vn.norm() * vn + fluid.drag_tangential * M_PI * vt.norm() * vt);
+    f_ref += ds * per_length;
+    m_ref += (s * ds) * per_length;
+  }
+  EXPECT_LT((force - f_ref).norm(), 1e-6 * f_ref.norm());
+  EXPECT_LT((moment - m_ref).norm(), 1e-6 * m_ref.norm());
+}
