@@ -276,6 +276,11 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
 bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& xdot) {
   assert(x.size() == stateSize() && xdot.size() == stateSize());
   if (!solve(x, ends, false)) return false;
+  writeRates(xdot);
+  return true;
+}
+
+CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
   for (int k = 0; k < n_; ++k) {
     const Eigen::Vector3d axis = u_.col(k), omega = omega_.col(k);
     xdot.segment<3>(StateLayout::axis(k)) = axis_rate_.col(k);
@@ -285,10 +290,11 @@ bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, 
     xdot.segment<3>(StateLayout::omega(k)) = rhs_.segment<3>(3 * k);
   }
   double damping_power = 0.0;
-  for (int k = 0; k < n_; ++k) damping_power += damping_torque_.col(k).dot(omega_.col(k));
+  if (stiffness_model_ != StiffnessModel::kPaper || has_springs_) {  // otherwise no damper at all
+    for (int k = 0; k < n_; ++k) damping_power += damping_torque_.col(k).dot(omega_.col(k));
+  }
   xdot(StateLayout::dissipated(n_)) = -(drag_power_ + added_mass_power_ + damping_power);
   xdot(StateLayout::workInput(n_)) = input_power_;
-  return true;
 }
 
 bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out) {
@@ -392,7 +398,7 @@ bool ChainDynamics::semiImplicitStep(const Eigen::VectorXd& x, const EndInputs& 
   return next.allFinite();
 }
 
-void ChainDynamics::kineticAndPotential(double& kinetic, double& potential) const {
+CABLE_HOT_PATH void ChainDynamics::kineticAndPotential(double& kinetic, double& potential) const {
   // Translation integrated along each link, rotation of the link's thickness, the load.
   kinetic = 0.5 * props_.load_mass * tip_vel_.squaredNorm();
   potential = -load_weight_ * tip_pos_.z();

@@ -124,6 +124,7 @@ class ChainDynamics {
   /// Generalized forces (rhs of M omega' = rhs) at x: O(n), no mass matrix.
   void generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& out);
   void jointForces();
+  void writeRates(Eigen::VectorXd& xdot) const;  ///< x' from the solved state, after solve()
   void computeJointTorques(const Eigen::VectorXd& x);
   void paperSpringTorques(const Eigen::VectorXd& x);
   void bendingSpringTorques(const Eigen::VectorXd& x);
