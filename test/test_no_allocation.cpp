@@ -38,6 +38,11 @@ initial: {elevation: 0.3}
 
 TEST(NoAllocation, RecursiveRk4Step) { expectNoAllocation({"simulation.formulation=recursive"}); }
 
+TEST(NoAllocation, RecursiveRk4StepInADepthProfile) {
+  // The drag point by point (a current that changes with depth) instead of the uniform shortcut.
+  expectNoAllocation({"fluid.current=[0, 0, 0]", "fluid.current_profile=[[0, 1.0, 0.2, 0.0], [20, 0.3, 0.0, 0.0]]"});
+}
+
 TEST(NoAllocation, DenseRk4Step) { expectNoAllocation({"simulation.formulation=paper"}); }
 
 TEST(NoAllocation, BendingSpringsStep) {

@@ -45,6 +45,11 @@ int main(int argc, char** argv) {
       "initial: {elevation: 0.3}\n";
   std::printf("\n5) cable_dynamics with full fluid forces (water, 1 m/s current, drag at 3 Gauss points per link,\n"
               "   added mass, 10 kg load), RK4, dt = 1 ms: wall time per step [ns], median of 3 interleaved\n");
+#ifdef CABLE_DYNAMICS_NO_CLONES
+  std::printf("   build: baseline x86-64 code only (CABLE_DYNAMICS_NO_CLONES)\n");
+#else
+  std::printf("   build: hot loops dispatched at run time (x86-64-v3 copy on a CPU with AVX2 and FMA)\n");
+#endif
   std::printf("%-6s %14s %14s %10s\n", "n", "paper", "recursive", "ratio");
   for (int n : sizes) {
     std::vector<double> dense_times, recursive_times;

@@ -61,8 +61,9 @@ struct ChainOutputs {
   double elastic_energy = 0.0;    ///< joint springs [J]
 };
 
-/// Equations of motion x' = f(t, x). The hot path is derivative(): it assembles the 3n x 3n mass matrix
-/// of the angular velocities in O(n^2) and solves it by Cholesky, O(n^3); it performs no heap allocation.
+/// Equations of motion x' = f(t, x). The hot path is derivative(): by default the O(n) articulated-body
+/// recursion (chain_recursive.cpp); with setRecursive(false) the 3n x 3n mass matrix of the angular
+/// velocities, assembled in O(n^2) and solved by Cholesky, O(n^3). Neither allocates on the heap.
 class ChainDynamics {
  public:
   explicit ChainDynamics(const CableParams& params);
