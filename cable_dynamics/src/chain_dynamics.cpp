@@ -139,7 +139,6 @@ CABLE_HOT_PATH void ChainDynamics::kinematics(const Eigen::VectorXd& x, const En
 
 CABLE_HOT_PATH void ChainDynamics::externalForces(const EndInputs& ends) {
   drag_power_ = 0.0;
-  const bool uniform = current_.uniform();
   for (int k = 0; k < n_; ++k) {
     const double l = props_.length(k), w = weight_(k);
     const Eigen::Vector3d axis = u_.col(k), axis_rate = axis_rate_.col(k), velocity = base_vel_.col(k);
@@ -147,11 +146,7 @@ CABLE_HOT_PATH void ChainDynamics::externalForces(const EndInputs& ends) {
     Eigen::Vector3d f(0.0, 0.0, w), m(0.0, 0.0, 0.5 * l * w);
     if (density_ > 0.0) {
       Eigen::Vector3d fd, md;
-      if (uniform) {
-        drag_.uniform(current_.uniformValue(), l, velocity, axis, axis_rate, fd, md);
-      } else {
-        drag_.pointwise(current_, l, base_pos_.col(k), velocity, axis, axis_rate, fd, md);
-      }
+      drag_.onLink(current_, l, base_pos_.col(k), velocity, axis, axis_rate, fd, md);
       f += fd;
       m += md;
       drag_power_ += fd.dot(velocity) + md.dot(axis_rate);

@@ -66,9 +66,10 @@ class LinkDrag {
   /// Drag on a link of length l [m] with base end at `base` [m] moving at `velocity` [m/s], unit axis u
   /// turning at u' = `axis_rate` [1/s]: the total force [N] and its first moment about the base end,
   /// the integral of s f(s) ds [N m] (the torque about the base end is u x moment).
-  void onLink(const CurrentField& current, double l, const Eigen::Vector3d& base, const Eigen::Vector3d& velocity,
-              const Eigen::Vector3d& axis, const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
-              Eigen::Vector3d& moment) const {
+  EIGEN_ALWAYS_INLINE void onLink(const CurrentField& current, double l, const Eigen::Vector3d& base,
+                                  const Eigen::Vector3d& velocity, const Eigen::Vector3d& axis,
+                                  const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
+                                  Eigen::Vector3d& moment) const {
     if (current.uniform()) {
       uniform(current.uniformValue(), l, velocity, axis, axis_rate, force, moment);
     } else {

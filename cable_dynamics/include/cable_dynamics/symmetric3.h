@@ -17,12 +17,6 @@ struct Symmetric3 {
     return {xx * v.x() + xy * v.y() + xz * v.z(), xy * v.x() + yy * v.y() + yz * v.z(),
             xz * v.x() + yz * v.y() + zz * v.z()};
   }
-
-  Eigen::Matrix3d dense() const {
-    Eigen::Matrix3d m;
-    m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-    return m;
-  }
 };
 
 }  // namespace cable_dynamics
