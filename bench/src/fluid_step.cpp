@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
 #ifdef CABLE_DYNAMICS_NO_CLONES
   std::printf("   build: baseline x86-64 code only (CABLE_DYNAMICS_NO_CLONES)\n");
 #else
-  std::printf("   build: hot loops dispatched at run time (x86-64-v3 copy on a CPU with AVX2 and FMA)\n");
+  std::printf("   build: hot loops dispatched at run time (x86-64-v4 / v3 copies where the CPU has them)\n");
 #endif
   std::printf("%-6s %14s %14s %10s\n", "n", "paper", "recursive", "ratio");
   for (int n : sizes) {
