@@ -248,6 +248,13 @@ void ChainDynamics::jointForces() {
   }
 }
 
+double ChainDynamics::addedMassPower(int k, const Eigen::Vector3d& base_acc, const Eigen::Vector3d& axis_acc) const {
+  Eigen::Vector3d base_weight, axis_weight;
+  addedMassPowerWeights(added_per_length_(k), props_.length(k), u_.col(k), axis_rate_.col(k), base_vel_.col(k),
+                        base_weight, axis_weight);
+  return base_weight.dot(base_acc) + axis_weight.dot(axis_acc);
+}
+
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
   if (!allFinite(x)) return false;
   kinematics(x, ends);

@@ -1,6 +1,6 @@
 /// \file
 /// \brief The O(n) formulation: an articulated-body recursion (Featherstone) written out for a chain of
-/// axisymmetric links on spherical joints (docs/MODEL.md section 7).
+/// axisymmetric links on spherical joints (docs/MODEL.md section 4).
 ///
 /// A spherical joint passes a force and no torque, so what the outboard part of the chain shows its
 /// parent is a 3x3 effective mass M_k and a bias force f_k at joint k: the force on the outboard part is
@@ -134,13 +134,6 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
     acc += c.length * axis_acc;
   }
   load_force_ = load_inertia_ * acc - load_external_;
-}
-
-double ChainDynamics::addedMassPower(int k, const Eigen::Vector3d& base_acc, const Eigen::Vector3d& axis_acc) const {
-  Eigen::Vector3d base_weight, axis_weight;
-  addedMassPowerWeights(added_per_length_(k), props_.length(k), u_.col(k), axis_rate_.col(k), base_vel_.col(k),
-                        base_weight, axis_weight);
-  return base_weight.dot(base_acc) + axis_weight.dot(axis_acc);
 }
 
 }  // namespace cable_dynamics
