@@ -1,5 +1,5 @@
-// The uniform-current shortcut of the link drag (one square root per Gauss point) against the
-// point-by-point Morison quadrature, and the quadrature against a fine midpoint rule of the same
+// The uniform-current shortcut of the link drag (one square root per Gauss point, eight links of a
+// block at once) against the point-by-point Morison quadrature, and the quadrature against a fine midpoint rule of the same
 // integrand (an integration written here independently of fluid.cpp's).
 #include <gtest/gtest.h>
 
@@ -39,6 +39,32 @@ LinkMotion randomMotion(std::mt19937& rng) {
   return m;
 }
 
+/// The drag addUniform() adds to the eight links of a block with the given motions and lengths [m]
+/// (a zero length is what a padding lane holds).
+struct BlockDrag {
+  Eigen::Vector3d force[cd::kBlockLanes], moment[cd::kBlockLanes];
+  double power[cd::kBlockLanes];
+};
+BlockDrag uniformDrag(const cd::LinkDrag& drag, const Eigen::Vector3d& current, const LinkMotion* motions,
+                      const double* lengths) {
+  cd::LinkBlock block{};
+  for (int i = 0; i < cd::kBlockLanes; ++i) {
+    block.length[i] = lengths[i];
+    block.u.set(i, cd::toVec3(motions[i].axis));
+    block.base_vel.set(i, cd::toVec3(motions[i].velocity));
+    block.axis_rate.set(i, cd::toVec3(motions[i].axis_rate));
+    block.base_pos.set(i, cd::toVec3(motions[i].base));
+  }
+  drag.addUniform(cd::toVec3(current), block);
+  BlockDrag out;
+  for (int i = 0; i < cd::kBlockLanes; ++i) {
+    out.force[i] = cd::toEigen(block.force[i]);
+    out.moment[i] = cd::toEigen(block.moment[i]);
+    out.power[i] = block.drag_power[i];
+  }
+  return out;
+}
+
 }  // namespace
 
 TEST(LinkDrag, UniformShortcutEqualsPointwiseQuadrature) {
@@ -49,15 +75,28 @@ TEST(LinkDrag, UniformShortcutEqualsPointwiseQuadrature) {
     const cd::LinkDrag drag(fluid, 0.025);
     const cd::CurrentField current(fluid);
     ASSERT_TRUE(current.uniform());
-    for (int trial = 0; trial < 50; ++trial) {
-      const LinkMotion m = randomMotion(rng);
-      const double l = 0.5 + trial * 0.1;  // [m]
-      Eigen::Vector3d f_fast, m_fast, f_slow, m_slow;
-      drag.uniform(current.uniformValue(), l, m.velocity, m.axis, m.axis_rate, f_fast, m_fast);
-      drag.pointwise(current, l, m.base, m.velocity, m.axis, m.axis_rate, f_slow, m_slow);
-      const double scale = f_slow.norm() + 1e-3;
-      EXPECT_LT((f_fast - f_slow).norm(), 1e-12 * scale) << "points " << points;
-      EXPECT_LT((m_fast - m_slow).norm(), 1e-12 * scale * l) << "points " << points;
+    for (int trial = 0; trial < 10; ++trial) {
+      LinkMotion motions[cd::kBlockLanes];
+      double lengths[cd::kBlockLanes];
+      for (int i = 0; i < cd::kBlockLanes; ++i) {
+        motions[i] = randomMotion(rng);
+        lengths[i] = 0.5 + 0.1 * (trial * cd::kBlockLanes + i);  // [m]
+      }
+      lengths[cd::kBlockLanes - 1] = 0.0;  // as in a padding lane: no drag at all
+      const BlockDrag fast = uniformDrag(drag, current.uniformValue(), motions, lengths);
+      for (int i = 0; i < cd::kBlockLanes; ++i) {
+        const LinkMotion& m = motions[i];
+        const double l = lengths[i];
+        Eigen::Vector3d f_slow, m_slow;
+        drag.pointwise(current, l, m.base, m.velocity, m.axis, m.axis_rate, f_slow, m_slow);
+        const double scale = f_slow.norm() + 1e-3;
+        EXPECT_LT((fast.force[i] - f_slow).norm(), 1e-12 * scale) << "points " << points << " lane " << i;
+        EXPECT_LT((fast.moment[i] - m_slow).norm(), 1e-12 * scale * (l + 1e-3)) << "points " << points << " lane " << i;
+        const double power = f_slow.dot(m.velocity) + m_slow.dot(m.axis_rate);  // [W]
+        EXPECT_NEAR(fast.power[i], power, 1e-12 * scale * (m.velocity.norm() + l * m.axis_rate.norm()) + 1e-15);
+      }
+      EXPECT_EQ(fast.force[cd::kBlockLanes - 1].norm(), 0.0);
+      EXPECT_EQ(fast.moment[cd::kBlockLanes - 1].norm(), 0.0);
     }
   }
 }
@@ -73,8 +112,14 @@ TEST(LinkDrag, GaussQuadratureMatchesFineMidpointRule) {
   const Eigen::Vector3d c = current.uniformValue();
   const Eigen::Vector3d axis = Eigen::Vector3d(0.3, 0.1, 0.9).normalized();
   const Eigen::Vector3d velocity(-0.4, 0.2, 0.0), axis_rate = Eigen::Vector3d(0.0, 0.5, 0.2).cross(axis);
-  Eigen::Vector3d force, moment;
-  drag.uniform(c, l, velocity, axis, axis_rate, force, moment);
+  LinkMotion motions[cd::kBlockLanes];
+  double lengths[cd::kBlockLanes];
+  for (int i = 0; i < cd::kBlockLanes; ++i) {
+    motions[i] = {Eigen::Vector3d(0.0, 0.0, 5.0), velocity, axis, axis_rate};
+    lengths[i] = l;
+  }
+  const BlockDrag block = uniformDrag(drag, c, motions, lengths);
+  const Eigen::Vector3d force = block.force[0], moment = block.moment[0];
   Eigen::Vector3d f_ref = Eigen::Vector3d::Zero(), m_ref = Eigen::Vector3d::Zero();
   const int cells = 20000;
   for (int i = 0; i < cells; ++i) {

@@ -66,7 +66,6 @@ inline void eulerAxes(double te, double psi, Eigen::Vector3d& n, Eigen::Vector3d
 ChainDynamics::ChainDynamics(const CableParams& params)
     : n_(params.links),
       props_(deriveLinkProperties(params)),
-      azimuths_(params.links),
       stiffness_model_(params.stiffness.model),
       current_(params.fluid),
       density_(params.fluid.density),
@@ -74,7 +73,8 @@ ChainDynamics::ChainDynamics(const CableParams& params)
       drag_(params.fluid, params.diameter),
       load_drag_area_(params.load.drag_area),
       load_coupling_stiffness_(params.load.coupling_stiffness),
-      load_coupling_damping_(params.load.coupling_damping) {
+      load_coupling_damping_(params.load.coupling_damping),
+      azimuths_(params.links) {
   const int n = n_;
   const double radius = 0.5 * diameter_;
   mass_per_length_ = props_.mass.cwiseQuotient(props_.length);
@@ -86,9 +86,8 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   load_weight_ = props_.gravity * props_.load_submerged_mass;
   paper_psi_ = Eigen::VectorXd::Zero(n);
 
-  for (Eigen::Matrix3Xd* m : {&u_, &omega_, &base_pos_, &base_vel_, &known_acc_, &beta_, &force_, &moment_,
-                              &inertial_force_, &inertial_moment_, &torque_, &axis_rate_,
-                              &axis_acc_, &joint_force_, &damping_torque_, &spring_torque_, &link_base_acc_}) {
+  for (Eigen::Matrix3Xd* m : {&inertial_force_, &inertial_moment_, &axis_acc_, &joint_force_, &damping_torque_,
+                              &spring_torque_, &link_base_acc_}) {
     m->setZero(3, n);
   }
   tensor_.assign(n, Eigen::Matrix3d::Zero());
@@ -101,7 +100,7 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   recursive_ = params.simulation.formulation == "recursive";
   has_springs_ = props_.stiffness_elevation.any() || props_.stiffness_azimuth.any() || props_.stiffness_torsion.any() ||
                  props_.damping_elevation.any() || props_.damping_azimuth.any() || props_.damping_torsion.any();
-  allocateRecursion();
+  fillLinkConstants();
   paper_q_.setZero(3 * n);
   paper_qd_.setZero(3 * n);
   lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(3 * n);
@@ -109,50 +108,96 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   llt_ = Eigen::LLT<Eigen::MatrixXd>(3 * n);
 }
 
-CABLE_HOT_PATH void ChainDynamics::kinematics(const Eigen::VectorXd& x, const EndInputs& ends) {
-  // Each link's values are formed in locals and stored once (reading back a column just written
-  // stalls the store-to-load forwarding of a 3-vector).
-  Eigen::Vector3d pos = ends.base_position, vel = ends.base_velocity, acc = ends.base_acceleration;
-  for (int k = 0; k < n_; ++k) {
-    // Links are unit vectors up to the integrator's drift: use the normalized axis.
-    const Eigen::Vector3d raw_axis = x.segment<3>(StateLayout::axis(k));
-    const Eigen::Vector3d axis = raw_axis * (1.0 / std::sqrt(raw_axis.squaredNorm()));
-    const Eigen::Vector3d omega = x.segment<3>(StateLayout::omega(k));
-    const Eigen::Vector3d axis_rate = omega.cross(axis);
-    const Eigen::Vector3d beta = omega.cross(axis_rate);  // centripetal part of u''
-    u_.col(k) = axis;
-    omega_.col(k) = omega;
-    axis_rate_.col(k) = axis_rate;
-    beta_.col(k) = beta;
-    base_pos_.col(k) = pos;
-    base_vel_.col(k) = vel;
-    known_acc_.col(k) = acc;
-    const double l = props_.length(k);
-    pos += l * axis;
-    vel += l * axis_rate;
-    acc += l * beta;
+void ChainDynamics::fillLinkConstants() {
+  links_ = LinkBlocks(n_);
+  for (int b = 0; b < links_.blocks(); ++b) {
+    LinkBlock& block = links_.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      block.u.set(i, {0.0, 0.0, 1.0});  // the padding lanes: a unit axis keeps them finite
+      const int k = b * kBlockLanes + i;
+      if (k >= n_) continue;  // zero length and mass: adds nothing anywhere
+      const double l = props_.length(k);
+      block.length[i] = l;
+      block.mass_per_length[i] = mass_per_length_(k);
+      block.added[i] = added_per_length_(k);
+      block.across[i] = mass_per_length_(k) + added_per_length_(k);
+      block.weight[i] = weight_(k);
+      block.half_moment[i] = 0.5 * l * l * block.across[i];
+      block.third_moment[i] = l * l * l / 3.0 * block.across[i];
+      block.thick_transverse[i] = thick_transverse_(k);
+      block.own_transverse[i] = block.third_moment[i] + thick_transverse_(k);
+      block.polar[i] = props_.inertia_polar(k);
+      block.inverse_polar[i] = 1.0 / props_.inertia_polar(k);
+    }
   }
-  tip_pos_ = pos;
-  tip_vel_ = vel;
-  tip_known_acc_ = acc;
+}
+
+CABLE_HOT_PATH void ChainDynamics::kinematics(const Eigen::VectorXd& x, const EndInputs& ends) {
+  const double* state = x.data();
+  Vec3 pos = toVec3(ends.base_position), vel = toVec3(ends.base_velocity), acc = toVec3(ends.base_acceleration);
+  for (int b = 0; b < links_.blocks(); ++b) {
+    LinkBlock& block = links_.block(b);
+    const int first = b * kBlockLanes, count = std::min(kBlockLanes, n_ - first);
+    for (int i = 0; i < count; ++i) {  // the state holds a link's numbers together, the block by kind
+      const double* link = state + StateLayout::axis(first + i);
+      block.u.set(i, {link[0], link[1], link[2]});
+      block.omega.set(i, {link[4], link[5], link[6]});
+    }
+    for (int i = 0; i < kBlockLanes; ++i) {
+      // Links are unit vectors up to the integrator's drift: use the normalized axis.
+      const Vec3 raw = block.u[i], omega = block.omega[i];
+      const Vec3 axis = (1.0 / std::sqrt(dot(raw, raw))) * raw;
+      const Vec3 axis_rate = cross(omega, axis);
+      block.u.set(i, axis);
+      block.axis_rate.set(i, axis_rate);
+      block.beta.set(i, cross(omega, axis_rate));  // centripetal part of u''
+      // sigma = psi + phi: from omega = -psi' e_z - te' n - phi' u, omega.(e_z + u) = -(psi' + phi')(1 + cos te).
+      const double denominator = 1.0 + axis.z, spin = dot(omega, axis);
+      block.twist_rate[i] = denominator > 1e-12 ? -(omega.z + spin) / denominator : -spin;
+    }
+    for (int i = 0; i < count; ++i) {  // base ends: running sums along the chain
+      block.base_pos.set(i, pos);
+      block.base_vel.set(i, vel);
+      block.known_acc.set(i, acc);
+      const double l = block.length[i];
+      pos = pos + l * block.u[i];
+      vel = vel + l * block.axis_rate[i];
+      acc = acc + l * block.beta[i];
+    }
+  }
+  tip_pos_ = toEigen(pos);
+  tip_vel_ = toEigen(vel);
+  tip_known_acc_ = toEigen(acc);
 }
 
 CABLE_HOT_PATH void ChainDynamics::externalForces(const EndInputs& ends) {
   drag_power_ = 0.0;
-  for (int k = 0; k < n_; ++k) {
-    const double l = props_.length(k), w = weight_(k);
-    const Eigen::Vector3d axis = u_.col(k), axis_rate = axis_rate_.col(k), velocity = base_vel_.col(k);
-    // Submerged weight, uniform along the link: total and first moment about the base end, plus drag.
-    Eigen::Vector3d f(0.0, 0.0, w), m(0.0, 0.0, 0.5 * l * w);
-    if (density_ > 0.0) {
-      Eigen::Vector3d fd, md;
-      drag_.onLink(current_, l, base_pos_.col(k), velocity, axis, axis_rate, fd, md);
-      f += fd;
-      m += md;
-      drag_power_ += fd.dot(velocity) + md.dot(axis_rate);
+  const bool uniform = current_.uniform();
+  const Vec3 current = toVec3(current_.uniformValue());
+  for (int b = 0; b < links_.blocks(); ++b) {
+    LinkBlock& block = links_.block(b);
+    // Submerged weight, uniform along the link: total and first moment about the base end.
+    for (int i = 0; i < kBlockLanes; ++i) {
+      block.force.set(i, {0.0, 0.0, block.weight[i]});
+      block.moment.set(i, {0.0, 0.0, 0.5 * block.length[i] * block.weight[i]});
     }
-    force_.col(k) = f;
-    moment_.col(k) = m;
+    if (density_ <= 0.0) continue;
+    if (uniform) {
+      drag_.addUniform(current, block);
+    } else {
+      const int first = b * kBlockLanes, count = std::min(kBlockLanes, n_ - first);
+      for (int i = 0; i < count; ++i) {
+        Eigen::Vector3d fd, md;
+        drag_.pointwise(current_, block.length[i], toEigen(block.base_pos[i]), toEigen(block.base_vel[i]),
+                        toEigen(block.u[i]), toEigen(block.axis_rate[i]), fd, md);
+        block.force.set(i, block.force[i] + toVec3(fd));
+        block.moment.set(i, block.moment[i] + toVec3(md));
+        block.drag_power[i] = fd.dot(toEigen(block.base_vel[i])) + md.dot(toEigen(block.axis_rate[i]));
+      }
+    }
+    double power = 0.0;  // the padding lanes' drag is zero (zero length)
+    for (int i = 0; i < kBlockLanes; ++i) power += block.drag_power[i];
+    drag_power_ += power;
   }
   // The load: weight, drag, and the PD coupling to its anchor or to the ROV.
   load_external_ = load_weight_ * kDown;
@@ -173,7 +218,7 @@ CABLE_HOT_PATH void ChainDynamics::externalForces(const EndInputs& ends) {
 void ChainDynamics::inertiaTensors() {
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int k = 0; k < n_; ++k) {
-    const Eigen::Vector3d axis = u_.col(k);
+    const Eigen::Vector3d axis = links_.get(&LinkBlock::u, k);
     tensor_[k] = mass_per_length_(k) * identity + added_per_length_(k) * (identity - axis * axis.transpose());
   }
 }
@@ -189,16 +234,16 @@ void ChainDynamics::assembleForces() {
     outboard_[k] = outboard;
     const double l = props_.length(k);
     const Eigen::Matrix3d& a = tensor_[k];
-    inertial_force_.col(k) = a * (l * known_acc_.col(k) + 0.5 * l * l * beta_.col(k));
-    inertial_moment_.col(k) = a * (0.5 * l * l * known_acc_.col(k) + (l * l * l / 3.0) * beta_.col(k));
+    inertial_force_.col(k) = a * (l * links_.get(&LinkBlock::known_acc, k) + 0.5 * l * l * links_.get(&LinkBlock::beta, k));
+    inertial_moment_.col(k) = a * (0.5 * l * l * links_.get(&LinkBlock::known_acc, k) + (l * l * l / 3.0) * links_.get(&LinkBlock::beta, k));
     // Generalized force of link k's angular velocity: moment about joint k of everything outboard of it.
-    const Eigen::Vector3d lever = l * outboard_force + moment_.col(k) - inertial_moment_.col(k);
-    const Eigen::Vector3d omega = omega_.col(k), axis = u_.col(k);
+    const Eigen::Vector3d lever = l * outboard_force + links_.get(&LinkBlock::moment, k) - inertial_moment_.col(k);
+    const Eigen::Vector3d omega = links_.get(&LinkBlock::omega, k), axis = links_.get(&LinkBlock::u, k);
     const double ip = props_.inertia_polar(k), it = thick_transverse_(k);
     const Eigen::Vector3d spin_axis = axis * axis.dot(omega);
     const Eigen::Vector3d angular_momentum = it * (omega - spin_axis) + ip * spin_axis;
-    rhs_.segment<3>(3 * k) = axis.cross(lever) + torque_.col(k) - omega.cross(angular_momentum);
-    outboard_force += force_.col(k) - inertial_force_.col(k);
+    rhs_.segment<3>(3 * k) = axis.cross(lever) + links_.get(&LinkBlock::torque, k) - omega.cross(angular_momentum);
+    outboard_force += links_.get(&LinkBlock::force, k) - inertial_force_.col(k);
     outboard += l * a;
   }
 }
@@ -210,15 +255,15 @@ void ChainDynamics::assembleMass() {
   // l_j^2 (l_j/3 A_j + B_j) plus the thickness inertia of the link.
   for (int j = 0; j < n; ++j) {
     const double l = props_.length(j);
-    const Eigen::Matrix3d uj = skew(u_.col(j));
+    const Eigen::Matrix3d uj = skew(links_.get(&LinkBlock::u, j));
     column_[j] = (l * (0.5 * l * tensor_[j] + outboard_[j])) * uj;
     const Eigen::Matrix3d diagonal = -uj * ((l * l) * ((l / 3.0) * tensor_[j] + outboard_[j])) * uj;
-    const Eigen::Vector3d axis = u_.col(j);
+    const Eigen::Vector3d axis = links_.get(&LinkBlock::u, j);
     const Eigen::Matrix3d rotation_inertia =
         thick_transverse_(j) * (identity - axis * axis.transpose()) + props_.inertia_polar(j) * axis * axis.transpose();
     mass_matrix_.block<3, 3>(3 * j, 3 * j) = diagonal + rotation_inertia;
     for (int r = 0; r < j; ++r) {
-      const Eigen::Matrix3d block = -props_.length(r) * skew(u_.col(r)) * column_[j];
+      const Eigen::Matrix3d block = -props_.length(r) * skew(links_.get(&LinkBlock::u, r)) * column_[j];
       mass_matrix_.block<3, 3>(3 * r, 3 * j) = block;
       mass_matrix_.block<3, 3>(3 * j, 3 * r) = block.transpose();
     }
@@ -228,10 +273,10 @@ void ChainDynamics::assembleMass() {
 void ChainDynamics::jointForces() {
   // Accelerations of the link axes and base ends with the solved angular accelerations, then the force
   // on everything outboard of each joint from Newton's law for that part: J_k = sum (A a - f).
-  Eigen::Vector3d acc = known_acc_.col(0);  // the base's own acceleration
+  Eigen::Vector3d acc = links_.get(&LinkBlock::known_acc, 0);  // the base's own acceleration
   Eigen::Matrix3Xd& link_base_acc = link_base_acc_;
   for (int k = 0; k < n_; ++k) {
-    axis_acc_.col(k) = rhs_.segment<3>(3 * k).cross(u_.col(k)) + beta_.col(k);
+    axis_acc_.col(k) = rhs_.segment<3>(3 * k).cross(links_.get(&LinkBlock::u, k)) + links_.get(&LinkBlock::beta, k);
     link_base_acc.col(k) = acc;
     acc += props_.length(k) * axis_acc_.col(k);
   }
@@ -242,17 +287,19 @@ void ChainDynamics::jointForces() {
   for (int k = n_ - 1; k >= 0; --k) {
     const double l = props_.length(k);
     const Eigen::Vector3d mean_acc = l * link_base_acc.col(k) + 0.5 * l * l * axis_acc_.col(k);
-    outboard += tensor_[k] * mean_acc - force_.col(k);
+    outboard += tensor_[k] * mean_acc - links_.get(&LinkBlock::force, k);
     joint_force_.col(k) = outboard;
     added_mass_power_ += addedMassPower(k, link_base_acc.col(k), axis_acc_.col(k));
   }
 }
 
 double ChainDynamics::addedMassPower(int k, const Eigen::Vector3d& base_acc, const Eigen::Vector3d& axis_acc) const {
-  Eigen::Vector3d base_weight, axis_weight;
-  addedMassPowerWeights(added_per_length_(k), props_.length(k), u_.col(k), axis_rate_.col(k), base_vel_.col(k),
+  const LinkBlock& block = links_.of(k);
+  const int i = LinkBlocks::lane(k);
+  Vec3 base_weight, axis_weight;
+  addedMassPowerWeights(block.added[i], block.length[i], block.u[i], block.axis_rate[i], block.base_vel[i],
                         base_weight, axis_weight);
-  return base_weight.dot(base_acc) + axis_weight.dot(axis_acc);
+  return dot(base_weight, toVec3(base_acc)) + dot(axis_weight, toVec3(axis_acc));
 }
 
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
@@ -284,16 +331,15 @@ bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, 
 
 CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
   for (int k = 0; k < n_; ++k) {
-    const Eigen::Vector3d axis = u_.col(k), omega = omega_.col(k);
-    xdot.segment<3>(StateLayout::axis(k)) = axis_rate_.col(k);
-    // sigma = psi + phi: from omega = -psi' e_z - te' n - phi' u, omega.(e_z + u) = -(psi' + phi')(1 + cos te).
-    const double denominator = 1.0 + axis.z();
-    xdot(StateLayout::twist(k)) = denominator > 1e-12 ? -omega.dot(kDown + axis) / denominator : -omega.dot(axis);
+    const LinkBlock& block = links_.of(k);
+    const int i = LinkBlocks::lane(k);
+    xdot.segment<3>(StateLayout::axis(k)) << block.axis_rate.x[i], block.axis_rate.y[i], block.axis_rate.z[i];
+    xdot(StateLayout::twist(k)) = block.twist_rate[i];
     xdot.segment<3>(StateLayout::omega(k)) = rhs_.segment<3>(3 * k);
   }
   double damping_power = 0.0;
   if (stiffness_model_ != StiffnessModel::kPaper || has_springs_) {  // otherwise no damper at all
-    for (int k = 0; k < n_; ++k) damping_power += damping_torque_.col(k).dot(omega_.col(k));
+    for (int k = 0; k < n_; ++k) damping_power += damping_torque_.col(k).dot(links_.get(&LinkBlock::omega, k));
   }
   xdot(StateLayout::dissipated(n_)) = -(drag_power_ + added_mass_power_ + damping_power);
   xdot(StateLayout::workInput(n_)) = input_power_;
@@ -304,11 +350,11 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   const int n = n_;
   out.omega_rate = rhs_;
   out.ends.resize(3, n + 1);
-  out.ends.leftCols(n) = base_pos_;
+  for (int k = 0; k < n; ++k) out.ends.col(k) = links_.get(&LinkBlock::base_pos, k);
   out.ends.col(n) = tip_pos_;
   out.joint_force = joint_force_;
   out.tension.resize(n);
-  for (int k = 0; k < n; ++k) out.tension(k) = -joint_force_.col(k).dot(u_.col(k));
+  for (int k = 0; k < n; ++k) out.tension(k) = -joint_force_.col(k).dot(links_.get(&LinkBlock::u, k));
   out.load_force = load_force_;
   out.base_force = -joint_force_.col(0);
   out.coupling_force = coupling_;
@@ -370,7 +416,7 @@ bool ChainDynamics::semiImplicitStep(const Eigen::VectorXd& x, const EndInputs& 
   generalizedForces(x, ends, force_plus_);
   assembleMass();
   system_ = mass_matrix_ - h * jacobian_velocity_ - (h * h) * jacobian_rotation_;
-  for (int k = 0; k < n; ++k) velocity_.segment<3>(3 * k) = omega_.col(k);
+  for (int k = 0; k < n; ++k) velocity_.segment<3>(3 * k) = links_.get(&LinkBlock::omega, k);
   step_rhs_.noalias() = jacobian_rotation_ * velocity_;
   step_rhs_ = h * (force_plus_ + h * step_rhs_);
   lu_.compute(system_);
@@ -380,12 +426,12 @@ bool ChainDynamics::semiImplicitStep(const Eigen::VectorXd& x, const EndInputs& 
   rhs_ = delta_ / h;
   jointForces();
   double damping_power = 0.0;
-  for (int k = 0; k < n; ++k) damping_power += damping_torque_.col(k).dot(omega_.col(k));
+  for (int k = 0; k < n; ++k) damping_power += damping_torque_.col(k).dot(links_.get(&LinkBlock::omega, k));
   input_power_ = joint_force_.col(0).dot(ends.base_velocity) + coupling_.dot(tip_vel_);
   next = x;
   for (int k = 0; k < n; ++k) {
-    const Eigen::Vector3d omega = omega_.col(k) + delta_.segment<3>(3 * k);
-    const Eigen::Vector3d axis = u_.col(k);
+    const Eigen::Vector3d omega = links_.get(&LinkBlock::omega, k) + delta_.segment<3>(3 * k);
+    const Eigen::Vector3d axis = links_.get(&LinkBlock::u, k);
     const double angle = h * omega.norm();
     Eigen::Vector3d turned = axis;
     if (angle > 0.0) turned = Eigen::AngleAxisd(angle, omega.normalized()) * axis;
@@ -401,17 +447,26 @@ bool ChainDynamics::semiImplicitStep(const Eigen::VectorXd& x, const EndInputs& 
 }
 
 CABLE_HOT_PATH void ChainDynamics::kineticAndPotential(double& kinetic, double& potential) const {
-  // Translation integrated along each link, rotation of the link's thickness, the load.
+  // Translation integrated along each link, rotation of the link's thickness, the load. Per-lane sums
+  // (the padding lanes add zero: no mass, no weight), so that the loop runs on vectors.
+  double kinetic_lanes[kBlockLanes] = {}, potential_lanes[kBlockLanes] = {};
+  for (int b = 0; b < links_.blocks(); ++b) {
+    const LinkBlock& block = links_.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const double l = block.length[i], m = block.mass_per_length[i];
+      const Vec3 v = block.base_vel[i], c = block.axis_rate[i], omega = block.omega[i], axis = block.u[i];
+      const double spin = dot(omega, axis);
+      kinetic_lanes[i] += 0.5 * m * (l * dot(v, v) + l * l * dot(v, c) + (l * l * l / 3.0) * dot(c, c)) +
+                          0.5 * block.thick_transverse[i] * (dot(omega, omega) - spin * spin) +
+                          0.5 * block.polar[i] * spin * spin;
+      potential_lanes[i] -= block.weight[i] * (block.base_pos.z[i] + 0.5 * l * axis.z);
+    }
+  }
   kinetic = 0.5 * props_.load_mass * tip_vel_.squaredNorm();
   potential = -load_weight_ * tip_pos_.z();
-  for (int k = 0; k < n_; ++k) {
-    const double l = props_.length(k), m = mass_per_length_(k);
-    const Eigen::Vector3d v = base_vel_.col(k), c = axis_rate_.col(k);
-    kinetic += 0.5 * m * (l * v.squaredNorm() + l * l * v.dot(c) + (l * l * l / 3.0) * c.squaredNorm());
-    const Eigen::Vector3d omega = omega_.col(k), axis = u_.col(k);
-    const double spin = omega.dot(axis);
-    kinetic += 0.5 * thick_transverse_(k) * (omega.squaredNorm() - spin * spin) + 0.5 * props_.inertia_polar(k) * spin * spin;
-    potential -= weight_(k) * (base_pos_(2, k) + 0.5 * l * axis.z());
+  for (int i = 0; i < kBlockLanes; ++i) {
+    kinetic += kinetic_lanes[i];
+    potential += potential_lanes[i];
   }
 }
 
@@ -434,7 +489,7 @@ void ChainDynamics::computeJointTorques(const Eigen::VectorXd& x) {
     bendingSpringTorques(x);
   }
   if (skip_damping_) damping_torque_.setZero();
-  torque_ = spring_torque_ + damping_torque_;
+  for (int k = 0; k < n_; ++k) links_.set(&LinkBlock::torque, k, spring_torque_.col(k) + damping_torque_.col(k));
 }
 
 void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
@@ -508,7 +563,7 @@ void ChainDynamics::paperSpringTorques(const Eigen::VectorXd& x) {
     const Eigen::Vector3d q_spring = -stiffness.cwiseProduct(paper_q_.segment<3>(3 * k));
     const Eigen::Vector3d q_damper = -damping.cwiseProduct(paper_qd_.segment<3>(3 * k));
     const double te = paper_q_(3 * k);
-    const Eigen::Vector3d axis = u_.col(k);
+    const Eigen::Vector3d axis = links_.get(&LinkBlock::u, k);
     Eigen::Vector3d nvec, evec;
     eulerAxes(te, paper_psi_(k), nvec, evec);
     const double sine = std::sin(te), cosine = std::cos(te);
@@ -528,8 +583,8 @@ void ChainDynamics::bendingSpringTorques(const Eigen::VectorXd& x) {
   // Joint k couples link k-1 (the fixed base direction, straight down, for k = 0) and link k.
   const LinkProperties& p = props_;
   for (int k = 0; k < n_; ++k) {
-    const Eigen::Vector3d prev = k > 0 ? Eigen::Vector3d(u_.col(k - 1)) : kDown;
-    const Eigen::Vector3d axis = u_.col(k);
+    const Eigen::Vector3d prev = k > 0 ? Eigen::Vector3d(links_.get(&LinkBlock::u, k - 1)) : kDown;
+    const Eigen::Vector3d axis = links_.get(&LinkBlock::u, k);
     const JointGeometry g =
         jointGeometry(prev, axis, x(StateLayout::twist(k)), k > 0 ? x(StateLayout::twist(k - 1)) : 0.0);
     // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
@@ -538,7 +593,7 @@ void ChainDynamics::bendingSpringTorques(const Eigen::VectorXd& x) {
     const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + g.cosine);
     const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
     // Dampers on the relative angular velocity: across the mean axis (bending) and about it (twist).
-    const Eigen::Vector3d relative = omega_.col(k) - (k > 0 ? Eigen::Vector3d(omega_.col(k - 1)) : Eigen::Vector3d::Zero());
+    const Eigen::Vector3d relative = links_.get(&LinkBlock::omega, k) - (k > 0 ? Eigen::Vector3d(links_.get(&LinkBlock::omega, k - 1)) : Eigen::Vector3d::Zero());
     const Eigen::Vector3d direction = (prev + axis).normalized();
     const double about = relative.dot(direction);
     const Eigen::Vector3d damper =

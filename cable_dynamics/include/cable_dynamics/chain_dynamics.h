@@ -20,7 +20,7 @@
 #include "cable_dynamics/azimuth_tracker.h"
 #include "cable_dynamics/cable_params.h"
 #include "cable_dynamics/fluid.h"
-#include "cable_dynamics/symmetric3.h"
+#include "cable_dynamics/link_block.h"
 
 namespace cable_dynamics {
 
@@ -117,7 +117,7 @@ class ChainDynamics {
   /// them, or only joint 0's, which the input power needs) by the articulated-body recursion (O(n);
   /// chain_recursive.cpp).
   void solveRecursive(bool all_joint_forces);
-  void allocateRecursion();
+  void fillLinkConstants();  ///< the constants of links_, and the padding lanes
   /// Power of the added-mass force on link k [W], from its base-end and axis accelerations.
   double addedMassPower(int k, const Eigen::Vector3d& base_acc, const Eigen::Vector3d& axis_acc) const;
   void assembleForces();  ///< tensors, outboard sums and the right-hand side rhs_ (O(n))
@@ -150,9 +150,8 @@ class ChainDynamics {
   AzimuthTracker azimuths_;              ///< continuous paper azimuths, followed after each accepted step
 
   // Workspace (sized once).
-  Eigen::Matrix3Xd u_, omega_, axis_rate_, base_pos_, base_vel_, known_acc_, beta_;  ///< axis_rate_: u' = omega x u
-  Eigen::Matrix3Xd force_, moment_, inertial_force_, inertial_moment_;
-  Eigen::Matrix3Xd torque_, axis_acc_;
+  LinkBlocks links_;  ///< per-link constants, kinematics, loads and the recursion's terms, 8 links a block
+  Eigen::Matrix3Xd inertial_force_, inertial_moment_, axis_acc_;
   Matrix3dVector tensor_;                ///< A_k = m' I + m_a' (I - u u^T) per length [kg/m]
   Matrix3dVector outboard_;              ///< B_k = sum_{j>k} l_j A_j + load [kg]
   Matrix3dVector column_;                ///< E_j [u_j]x, shared by column j of M
@@ -163,7 +162,7 @@ class ChainDynamics {
   Eigen::Matrix3Xd joint_force_;
   Eigen::Vector3d load_force_;
   double drag_power_ = 0.0, added_mass_power_ = 0.0, input_power_ = 0.0;
-  Eigen::Matrix3Xd spring_torque_, damping_torque_;  ///< (3 x n) [N m]; torque_ is their sum
+  Eigen::Matrix3Xd spring_torque_, damping_torque_;  ///< (3 x n) [N m]; LinkBlock::torque is their sum
   Eigen::VectorXd paper_psi_;                        ///< (n) absolute azimuths [rad]
   Eigen::Matrix3Xd link_base_acc_;                   ///< (3 x n) acceleration of each link's base end [m/s^2]
   // Semi-implicit integrator workspace.
@@ -173,35 +172,6 @@ class ChainDynamics {
   bool skip_damping_ = false;  ///< generalized forces without the dampers (the stiffness Jacobian)
   bool recursive_ = true;
   bool has_springs_ = false;  ///< any joint spring or damper at all
-  /// What the recursion's backward pass leaves for its forward pass, per link k (chain_recursive.cpp).
-  struct ArticulatedLink {
-    // Known before the recursion (each link on its own).
-    Eigen::Vector3d e1, e2;       ///< basis of the plane normal to u_k, e1 x e2 = u_k
-    Symmetric3 own_mass;          ///< l A, the link's translational inertia [kg]
-    Eigen::Vector3d own_force;    ///< l^2/2 A beta - F: the link's bias force [N]
-    Eigen::Vector3d own_moment;   ///< l^3/3 (m' + m_a') beta - first moment of F [N m]
-    double q1, q2;                ///< gyroscopic torque minus the joint torque, on e1 and e2 [N m]
-    Eigen::Vector3d added_base;   ///< added-mass power = added_base.a_k + added_axis.u_k'' [kg/s]
-    Eigen::Vector3d added_axis;   ///< [kg m/s]
-    // From the backward pass.
-    Eigen::Vector3d x1, x2;       ///< X = W S^-1: transverse accelerations y = y_g - X^T a_k [1/m]
-    double y1, y2;                ///< y_g = -S^-1 g, the transverse accelerations at a_k = 0 [rad/s^2]
-    Symmetric3 mass;              ///< M_k, effective mass of the outboard part at joint k [kg]
-    Eigen::Vector3d force;        ///< f_k, its bias force [N]
-  };
-  std::vector<ArticulatedLink> articulated_;
-  /// Per-link constants of the recursion, computed once [SI].
-  struct LinkConstants {
-    double length;          ///< l [m]
-    double across;          ///< m' + m_a', mass per length across the link [kg/m]
-    double added;           ///< m_a', normal added mass per length [kg/m]
-    double own_transverse;  ///< c1 = l^3/3 (m' + m_a') + thickness inertia: transverse, about the base end [kg m^2]
-    double half_moment;     ///< l^2/2 (m' + m_a') [kg m]
-    double third_moment;    ///< l^3/3 (m' + m_a') [kg m^2]
-    double inverse_polar;   ///< 1 / I_P [1/(kg m^2)]
-    double gyroscopic;      ///< I_P - thickness inertia [kg m^2]
-  };
-  std::vector<LinkConstants> constants_;
   Eigen::VectorXd paper_q_, paper_qd_;  ///< (3n) paper coordinates and rates for the paper springs
 };
 

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "cable_dynamics/cable_params.h"
+#include "cable_dynamics/link_block.h"
 
 namespace cable_dynamics {
 
@@ -47,10 +48,9 @@ Eigen::Vector3d morisonDragPerLength(const Eigen::Vector3d& axis, const Eigen::V
 /// the velocity x' = v + s u', integrated over the length l. With x'' = a + s u'' and P x' = P v + s u'
 /// (u' is normal to u) it is -m_a' [l a.Pv + l^2/2 (a.u' + u''.Pv) + l^3/3 u''.u'].
 /// added_per_length m_a' [kg/m], l [m], unit axis u, axis_rate u' [1/s], velocity v [m/s].
-EIGEN_ALWAYS_INLINE void addedMassPowerWeights(double added_per_length, double l, const Eigen::Vector3d& u,
-                                               const Eigen::Vector3d& axis_rate, const Eigen::Vector3d& velocity,
-                                               Eigen::Vector3d& base_weight, Eigen::Vector3d& axis_weight) {
-  const Eigen::Vector3d normal_velocity = velocity - u.dot(velocity) * u;
+inline void addedMassPowerWeights(double added_per_length, double l, const Vec3& u, const Vec3& axis_rate,
+                                  const Vec3& velocity, Vec3& base_weight, Vec3& axis_weight) {
+  const Vec3 normal_velocity = velocity - dot(u, velocity) * u;
   base_weight = -added_per_length * (l * normal_velocity + (0.5 * l * l) * axis_rate);
   axis_weight = -added_per_length * ((0.5 * l * l) * normal_velocity + (l * l * l / 3.0) * axis_rate);
 }
@@ -63,47 +63,55 @@ class LinkDrag {
  public:
   LinkDrag(const FluidParams& fluid, double diameter);
 
+  /// Adds the drag in a current that is the same at every depth [m/s] to the eight links of `block`
+  /// (its length, base_vel, u and axis_rate): the force [N] to `force`, its first moment about the base
+  /// end, the integral of s f(s) ds [N m], to `moment` (the torque about the base end is u x moment), and
+  /// sets `drag_power` [W]. With one current c the relative water velocity is c - v - s u', and u' is
+  /// normal to u: its tangential part (c - v).u is the same at every s, and its normal part is n0 - s u'
+  /// with |n0 - s u'|^2 quadratic in s. So the quadrature needs one square root per point, and the
+  /// force and moment are n0 and u' weighted by sums of w |n(s)|, w s |n(s)| and w s^2 |n(s)|. Each
+  /// loop runs over the block's lanes and compiles to vector instructions. Inline: it runs for every
+  /// link in every evaluation.
+  EIGEN_ALWAYS_INLINE void addUniform(const Vec3& current, LinkBlock& block) const {
+    double c0[kBlockLanes], c1[kBlockLanes], c2[kBlockLanes], along[kBlockLanes];
+    Lanes3 normal;
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const Vec3 relative = current - block.base_vel[i], axis = block.u[i], axis_rate = block.axis_rate[i];
+      along[i] = dot(relative, axis);
+      const Vec3 n0 = relative - along[i] * axis;
+      normal.set(i, n0);
+      c0[i] = dot(n0, n0);
+      c1[i] = -2.0 * dot(n0, axis_rate);
+      c2[i] = dot(axis_rate, axis_rate);
+    }
+    double sum0[kBlockLanes] = {}, sum1[kBlockLanes] = {}, sum2[kBlockLanes] = {};
+    for (int p = 0; p < points_; ++p) {
+      const double node = nodes_[p], weight = weights_[p];
+      for (int i = 0; i < kBlockLanes; ++i) {
+        const double l = block.length[i], s = node * l, w = weight * l;
+        const double speed_squared = c0[i] + s * (c1[i] + s * c2[i]);  // |n(s)|^2; round-off can dip below 0
+        const double speed = std::sqrt(std::max(speed_squared, 0.0));
+        sum0[i] += w * speed;
+        sum1[i] += (w * s) * speed;
+        sum2[i] += (w * s * s) * speed;
+      }
+    }
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const double l = block.length[i];
+      const Vec3 axis = block.u[i], axis_rate = block.axis_rate[i], n0 = normal[i];
+      const double tangential = tangential_coefficient_ * std::abs(along[i]) * along[i] * l;  // [N]
+      const Vec3 force = normal_coefficient_ * (sum0[i] * n0 - sum1[i] * axis_rate) + tangential * axis;
+      const Vec3 moment = normal_coefficient_ * (sum1[i] * n0 - sum2[i] * axis_rate) + (0.5 * l * tangential) * axis;
+      block.force.set(i, block.force[i] + force);
+      block.moment.set(i, block.moment[i] + moment);
+      block.drag_power[i] = dot(force, block.base_vel[i]) + dot(moment, axis_rate);
+    }
+  }
+
   /// Drag on a link of length l [m] with base end at `base` [m] moving at `velocity` [m/s], unit axis u
-  /// turning at u' = `axis_rate` [1/s]: the total force [N] and its first moment about the base end,
-  /// the integral of s f(s) ds [N m] (the torque about the base end is u x moment).
-  EIGEN_ALWAYS_INLINE void onLink(const CurrentField& current, double l, const Eigen::Vector3d& base,
-                                  const Eigen::Vector3d& velocity, const Eigen::Vector3d& axis,
-                                  const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
-                                  Eigen::Vector3d& moment) const {
-    if (current.uniform()) {
-      uniform(current.uniformValue(), l, velocity, axis, axis_rate, force, moment);
-    } else {
-      pointwise(current, l, base, velocity, axis, axis_rate, force, moment);
-    }
-  }
-
-  /// onLink() for a current that is the same along the whole link [m/s]. With one current c the
-  /// relative water velocity is c - v - s u', and u' is normal to u: its tangential part (c - v).u is the
-  /// same at every s, and its normal part is n0 - s u' with |n0 - s u'|^2 quadratic in s. So the
-  /// quadrature needs one square root per point, and the force and moment are n0 and u' weighted by
-  /// sums of w |n(s)|, w s |n(s)| and w s^2 |n(s)|. Inline: it runs for every link in every evaluation.
-  EIGEN_ALWAYS_INLINE void uniform(const Eigen::Vector3d& current, double l, const Eigen::Vector3d& velocity, const Eigen::Vector3d& axis,
-               const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force, Eigen::Vector3d& moment) const {
-    const Eigen::Vector3d relative = current - velocity;
-    const double along = relative.dot(axis);
-    const Eigen::Vector3d normal = relative - along * axis;
-    const double c0 = normal.squaredNorm(), c1 = -2.0 * normal.dot(axis_rate), c2 = axis_rate.squaredNorm();
-    double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0;
-    for (int i = 0; i < points_; ++i) {
-      const double s = nodes_[i] * l, w = weights_[i] * l;
-      const double speed_squared = c0 + s * (c1 + s * c2);  // |n(s)|^2; round-off can dip below 0
-      const double speed = std::sqrt(std::max(speed_squared, 0.0));
-      sum0 += w * speed;
-      sum1 += (w * s) * speed;
-      sum2 += (w * s * s) * speed;
-    }
-    const double tangential = tangential_coefficient_ * std::abs(along) * along * l;  // [N]
-    force = normal_coefficient_ * (sum0 * normal - sum1 * axis_rate) + tangential * axis;
-    moment = normal_coefficient_ * (sum1 * normal - sum2 * axis_rate) + (0.5 * l * tangential) * axis;
-  }
-
-  /// The same quadrature evaluated point by point with the current at each point's depth (what onLink()
-  /// does for a depth profile; public so that tests can hold the uniform shortcut against it).
+  /// turning at u' = `axis_rate` [1/s], by the same quadrature evaluated point by point with the current
+  /// at each point's depth: the total force [N] and its first moment about the base end [N m]. What
+  /// a depth profile needs, and the reference the tests hold addUniform() against.
   void pointwise(const CurrentField& current, double l, const Eigen::Vector3d& base, const Eigen::Vector3d& velocity,
                  const Eigen::Vector3d& axis, const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
                  Eigen::Vector3d& moment) const;

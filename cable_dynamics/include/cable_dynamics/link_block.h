@@ -1,0 +1,143 @@
+#pragma once
+/// \file
+/// \brief Per-link quantities stored eight links to a block: a structure of arrays inside each block.
+///
+/// The loops that treat every link alike (kinematics, drag, each link's own terms of the recursion,
+/// energies) run over the eight lanes of a block, and the compiler turns them into vector instructions
+/// that work on four or eight links at once. The serial loops of the recursion find all of one link's
+/// values from one pointer. Lanes past the last link hold a massless link of zero length, which keeps
+/// every lane finite and adds nothing to a sum.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace cable_dynamics {
+
+constexpr int kBlockLanes = 8;
+
+/// A 3-vector of three plain doubles, for the lane loops: Eigen's fixed-size vectors use their own
+/// two-wide packets, which keep the compiler from vectorizing across links.
+struct Vec3 {
+  double x, y, z;
+};
+inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
+inline Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline Vec3 toVec3(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+inline Eigen::Vector3d toEigen(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+/// One 3-vector quantity of the eight links of a block.
+struct Lanes3 {
+  double x[kBlockLanes], y[kBlockLanes], z[kBlockLanes];
+  Vec3 operator[](int i) const { return {x[i], y[i], z[i]}; }
+  void set(int i, const Vec3& v) {
+    x[i] = v.x;
+    y[i] = v.y;
+    z[i] = v.z;
+  }
+};
+
+/// Symmetric 3x3 matrix [xx xy xz; xy yy yz; xz yz zz], exactly symmetric by construction (the
+/// recursion amplifies an antisymmetric round-off part link by link, a symmetric one not).
+struct Symmetric3 {
+  double xx, xy, xz, yy, yz, zz;
+  static Symmetric3 scaledIdentity(double s) { return {s, 0.0, 0.0, s, 0.0, s}; }
+  Vec3 operator*(const Vec3& v) const {
+    return {xx * v.x + xy * v.y + xz * v.z, xy * v.x + yy * v.y + yz * v.z, xz * v.x + yz * v.y + zz * v.z};
+  }
+  Eigen::Matrix3d dense() const {
+    Eigen::Matrix3d m;
+    m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+    return m;
+  }
+};
+
+/// One symmetric 3x3 quantity of the eight links of a block.
+struct LanesSymmetric3 {
+  double xx[kBlockLanes], xy[kBlockLanes], xz[kBlockLanes], yy[kBlockLanes], yz[kBlockLanes], zz[kBlockLanes];
+  Symmetric3 operator[](int i) const { return {xx[i], xy[i], xz[i], yy[i], yz[i], zz[i]}; }
+  void set(int i, const Symmetric3& m) {
+    xx[i] = m.xx;
+    xy[i] = m.xy;
+    xz[i] = m.xz;
+    yy[i] = m.yy;
+    yz[i] = m.yz;
+    zz[i] = m.zz;
+  }
+};
+
+/// Eight links' constants, state-derived quantities and the recursion's intermediate results (SI units;
+/// what each means: chain_dynamics.h and docs/MODEL.md section 4).
+struct alignas(64) LinkBlock {
+  // Constants, set once.
+  double length[kBlockLanes];           ///< l [m]
+  double mass_per_length[kBlockLanes];  ///< m' [kg/m]
+  double added[kBlockLanes];            ///< m_a', normal added mass per length [kg/m]
+  double across[kBlockLanes];           ///< m' + m_a' [kg/m]
+  double weight[kBlockLanes];           ///< submerged weight [N]
+  double half_moment[kBlockLanes];      ///< l^2/2 (m' + m_a') [kg m]
+  double third_moment[kBlockLanes];     ///< l^3/3 (m' + m_a') [kg m^2]
+  double own_transverse[kBlockLanes];   ///< l^3/3 (m' + m_a') + thickness inertia, about the base end [kg m^2]
+  double thick_transverse[kBlockLanes]; ///< thickness part of the transverse inertia, m r^2/4 [kg m^2]
+  double polar[kBlockLanes];            ///< I_P [kg m^2]
+  double inverse_polar[kBlockLanes];    ///< 1/I_P, 0 in the padding lanes [1/(kg m^2)]
+  // Kinematics (ChainDynamics::kinematics).
+  Lanes3 u;            ///< unit axis
+  Lanes3 omega;        ///< angular velocity [rad/s]
+  Lanes3 axis_rate;    ///< u' = omega x u [1/s]
+  Lanes3 beta;         ///< omega x u': u'' at zero angular acceleration [1/s^2]
+  Lanes3 base_pos;     ///< base end [m]
+  Lanes3 base_vel;     ///< [m/s]
+  Lanes3 known_acc;    ///< base-end acceleration at zero angular accelerations [m/s^2]
+  double twist_rate[kBlockLanes];  ///< sigma' [rad/s]
+  // External loads (ChainDynamics::externalForces, computeJointTorques).
+  Lanes3 force;        ///< total external force on the link [N]
+  Lanes3 moment;       ///< its first moment about the base end [N m]
+  Lanes3 torque;       ///< joint springs and dampers on the link [N m]
+  double drag_power[kBlockLanes];  ///< power of the drag on the link [W]
+  // The recursion, each link on its own (chain_recursive.cpp).
+  Lanes3 e1, e2;              ///< basis of the plane normal to u, e1 x e2 = u
+  LanesSymmetric3 own_mass;   ///< l A, the link's translational inertia [kg]
+  Lanes3 own_force;           ///< l^2/2 A beta - F [N]
+  Lanes3 own_moment;          ///< l^3/3 (m' + m_a') beta - first moment of F [N m]
+  double q1[kBlockLanes], q2[kBlockLanes];  ///< gyroscopic torque minus the joint torque on e1, e2 [N m]
+  double spin_acc[kBlockLanes];             ///< angular acceleration about u [rad/s^2]
+  Lanes3 added_base;          ///< added-mass power = added_base.a_k + added_axis.u_k'' [kg/s]
+  Lanes3 added_axis;          ///< [kg m/s]
+  // The recursion's backward pass.
+  Lanes3 x1, x2;              ///< transverse accelerations y = y_g - X^T a_k [1/m]
+  double y1[kBlockLanes], y2[kBlockLanes];  ///< y_g [rad/s^2]
+  LanesSymmetric3 mass;       ///< M_k, effective mass of the outboard part at joint k [kg]
+  Lanes3 bias;                ///< f_k, its bias force [N]
+};
+
+/// The blocks of a chain of n links, with per-link access for the code that goes link by link.
+class LinkBlocks {
+ public:
+  explicit LinkBlocks(int links = 0)
+      : blocks_((links + kBlockLanes - 1) / kBlockLanes) {}
+
+  int blocks() const { return static_cast<int>(blocks_.size()); }
+  LinkBlock& block(int b) { return blocks_[b]; }
+  const LinkBlock& block(int b) const { return blocks_[b]; }
+  LinkBlock& of(int k) { return blocks_[k / kBlockLanes]; }
+  const LinkBlock& of(int k) const { return blocks_[k / kBlockLanes]; }
+  static int lane(int k) { return k % kBlockLanes; }
+
+  /// 3-vector `field` of link k, e.g. get(&LinkBlock::u, k).
+  Eigen::Vector3d get(Lanes3 LinkBlock::*field, int k) const { return toEigen((of(k).*field)[lane(k)]); }
+  void set(Lanes3 LinkBlock::*field, int k, const Eigen::Vector3d& v) { (of(k).*field).set(lane(k), toVec3(v)); }
+  double get(double (LinkBlock::*field)[kBlockLanes], int k) const { return (of(k).*field)[lane(k)]; }
+  void set(double (LinkBlock::*field)[kBlockLanes], int k, double v) { (of(k).*field)[lane(k)] = v; }
+
+ private:
+  std::vector<LinkBlock> blocks_;  // C++17's allocator honours the 64-byte alignment
+};
+
+}  // namespace cable_dynamics
