@@ -133,16 +133,19 @@ void ChainDynamics::fillLinkConstants() {
 }
 
 CABLE_HOT_PATH void ChainDynamics::kinematics(const Eigen::VectorXd& x, const EndInputs& ends) {
-  const double* state = x.data();
-  Vec3 pos = toVec3(ends.base_position), vel = toVec3(ends.base_velocity), acc = toVec3(ends.base_acceleration);
+  // Three passes, each over the whole chain. The state holds a link's numbers together and a block
+  // holds them by kind, so the first pass copies them one by one; a whole pass lies between those
+  // scalar stores and the vector loads of the second (a vector load right after the scalar stores
+  // it spans would wait for them to reach the cache).
+  for (int k = 0; k < n_; ++k) {
+    LinkBlock& block = links_.of(k);
+    const int i = LinkBlocks::lane(k);
+    const double* link = x.data() + StateLayout::axis(k);
+    block.u.set(i, {link[0], link[1], link[2]});
+    block.omega.set(i, {link[4], link[5], link[6]});
+  }
   for (int b = 0; b < links_.blocks(); ++b) {
     LinkBlock& block = links_.block(b);
-    const int first = b * kBlockLanes, count = std::min(kBlockLanes, n_ - first);
-    for (int i = 0; i < count; ++i) {  // the state holds a link's numbers together, the block by kind
-      const double* link = state + StateLayout::axis(first + i);
-      block.u.set(i, {link[0], link[1], link[2]});
-      block.omega.set(i, {link[4], link[5], link[6]});
-    }
     for (int i = 0; i < kBlockLanes; ++i) {
       // Links are unit vectors up to the integrator's drift: use the normalized axis.
       const Vec3 raw = block.u[i], omega = block.omega[i];
@@ -155,15 +158,19 @@ CABLE_HOT_PATH void ChainDynamics::kinematics(const Eigen::VectorXd& x, const En
       const double denominator = 1.0 + axis.z, spin = dot(omega, axis);
       block.twist_rate[i] = denominator > 1e-12 ? -(omega.z + spin) / denominator : -spin;
     }
-    for (int i = 0; i < count; ++i) {  // base ends: running sums along the chain
-      block.base_pos.set(i, pos);
-      block.base_vel.set(i, vel);
-      block.known_acc.set(i, acc);
-      const double l = block.length[i];
-      pos = pos + l * block.u[i];
-      vel = vel + l * block.axis_rate[i];
-      acc = acc + l * block.beta[i];
-    }
+  }
+  // Base ends: running sums along the chain.
+  Vec3 pos = toVec3(ends.base_position), vel = toVec3(ends.base_velocity), acc = toVec3(ends.base_acceleration);
+  for (int k = 0; k < n_; ++k) {
+    LinkBlock& block = links_.of(k);
+    const int i = LinkBlocks::lane(k);
+    block.base_pos.set(i, pos);
+    block.base_vel.set(i, vel);
+    block.known_acc.set(i, acc);
+    const double l = block.length[i];
+    pos = pos + l * block.u[i];
+    vel = vel + l * block.axis_rate[i];
+    acc = acc + l * block.beta[i];
   }
   tip_pos_ = toEigen(pos);
   tip_vel_ = toEigen(vel);
@@ -308,7 +315,7 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   externalForces(ends);
   computeJointTorques(x);
   if (recursive_) {
-    solveRecursive(all_joint_forces);  // rhs_ holds the angular accelerations, and the forces are known
+    solveRecursive(all_joint_forces);  // LinkBlock::omega_rate holds the angular accelerations
   } else {
     assembleForces();
     assembleMass();
@@ -316,10 +323,23 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
     if (llt_.info() != Eigen::Success) return false;
     llt_.solveInPlace(rhs_);  // rhs_ now holds the angular accelerations
     jointForces();
+    for (int k = 0; k < n_; ++k) links_.set(&LinkBlock::omega_rate, k, rhs_.segment<3>(3 * k));
   }
-  if (!allFinite(rhs_)) return false;
+  if (!finiteAngularAccelerations()) return false;
   input_power_ = joint_force_.col(0).dot(ends.base_velocity) + coupling_.dot(tip_vel_);
   return true;
+}
+
+CABLE_HOT_PATH bool ChainDynamics::finiteAngularAccelerations() const {
+  // One vectorized sum (see allFinite); the padding lanes hold zeros.
+  double sum[kBlockLanes] = {};
+  for (int b = 0; b < links_.blocks(); ++b) {
+    const Lanes3& rate = links_.block(b).omega_rate;
+    for (int i = 0; i < kBlockLanes; ++i) sum[i] += rate.x[i] + rate.y[i] + rate.z[i];
+  }
+  double total = 0.0;
+  for (int i = 0; i < kBlockLanes; ++i) total += sum[i];
+  return std::isfinite(total);
 }
 
 bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& xdot) {
@@ -335,7 +355,7 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
     const int i = LinkBlocks::lane(k);
     xdot.segment<3>(StateLayout::axis(k)) << block.axis_rate.x[i], block.axis_rate.y[i], block.axis_rate.z[i];
     xdot(StateLayout::twist(k)) = block.twist_rate[i];
-    xdot.segment<3>(StateLayout::omega(k)) = rhs_.segment<3>(3 * k);
+    xdot.segment<3>(StateLayout::omega(k)) << block.omega_rate.x[i], block.omega_rate.y[i], block.omega_rate.z[i];
   }
   double damping_power = 0.0;
   if (stiffness_model_ != StiffnessModel::kPaper || has_springs_) {  // otherwise no damper at all
@@ -348,7 +368,8 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
 bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out) {
   if (!solve(x, ends, true)) return false;
   const int n = n_;
-  out.omega_rate = rhs_;
+  out.omega_rate.resize(3 * n);
+  for (int k = 0; k < n; ++k) out.omega_rate.segment<3>(3 * k) = links_.get(&LinkBlock::omega_rate, k);
   out.ends.resize(3, n + 1);
   for (int k = 0; k < n; ++k) out.ends.col(k) = links_.get(&LinkBlock::base_pos, k);
   out.ends.col(n) = tip_pos_;

@@ -32,14 +32,20 @@ inline void normalPlaneBasis(const Vec3& u, Vec3& e1, Vec3& e2) {
 
 CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
   const int n = n_;
+  // The base-end accelerations split as a_k = a0_k + d_k: a0_k, the known part (kinematics: the sum
+  // of l_j beta_j inboard of k, the base's own acceleration included) and d_k from the angular
+  // accelerations, with d_0 = 0 and d_{k+1} = d_k + l_k C_k y_k. The recursion carries the force on the
+  // outboard part as J_k = M_k d_k + F_k (F_k = M_k a0_k + f_k): the known accelerations then enter
+  // each link's own bias terms only, which the first loop forms on vectors, and not the serial pass.
+  //
   // What each link contributes on its own: its plane basis, inertia and bias (velocity terms: the
-  // centripetal beta = u'' at zero angular acceleration and the gyroscopic torque, minus the external
-  // forces). Every link alike: the loop runs over a block's lanes, on vectors.
+  // centripetal beta = u'' at zero angular acceleration and the gyroscopic torque; the known
+  // acceleration; minus the external forces). Every link alike: the loop runs over a block's lanes.
   for (int b = 0; b < links_.blocks(); ++b) {
     LinkBlock& block = links_.block(b);
     for (int i = 0; i < kBlockLanes; ++i) {
       const Vec3 u = block.u[i], beta = block.beta[i], omega = block.omega[i], torque = block.torque[i];
-      const Vec3 axis_rate = block.axis_rate[i];
+      const Vec3 axis_rate = block.axis_rate[i], known = block.known_acc[i];
       const double l = block.length[i], across = block.across[i], added = block.added[i];
       Vec3 e1, e2;
       normalPlaneBasis(u, e1, e2);
@@ -49,9 +55,11 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
       const double lm = l * across, la = l * added;
       block.own_mass.set(i, {lm - la * u.x * u.x, -la * u.x * u.y, -la * u.x * u.z, lm - la * u.y * u.y,
                              -la * u.y * u.z, lm - la * u.z * u.z});
-      const Vec3 a_beta = across * beta - (added * dot(u, beta)) * u;
-      block.own_force.set(i, (0.5 * l * l) * a_beta - block.force[i]);
-      block.own_moment.set(i, block.third_moment[i] * beta - block.moment[i]);
+      // The link's points at s accelerate by a0 + s beta at y = 0: the force integral A (l a0 + l^2/2 beta),
+      // its first moment A (l^2/2 a0 + l^3/3 beta), of which only u x (...) counts, where A acts as m' + m_a'.
+      const Vec3 mean = l * known + (0.5 * l * l) * beta;
+      block.own_force.set(i, across * mean - (added * dot(u, mean)) * u - block.force[i]);
+      block.own_moment.set(i, across * ((0.5 * l * l) * known) + block.third_moment[i] * beta - block.moment[i]);
       // omega x (I_rot omega) - tau, with I_rot = I_thick (I - u u^T) + I_P u u^T.
       const double gyroscopic = block.polar[i] - block.thick_transverse[i];
       const Vec3 q = (gyroscopic * dot(u, omega)) * axis_rate - torque;
@@ -59,16 +67,12 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
       block.q2[i] = dot(e2, q);
       // Spin: I_P (omega'.u) = tau.u, since a spherical joint passes no torque along the link.
       block.spin_acc[i] = block.inverse_polar[i] * dot(u, torque);
-      Vec3 added_base, added_axis;
-      addedMassPowerWeights(added, l, u, axis_rate, block.base_vel[i], added_base, added_axis);
-      block.added_base.set(i, added_base);
-      block.added_axis.set(i, added_axis);
     }
   }
-  // Backward: from the load inwards, fold everything outboard of joint k into (M_k, f_k).
-  // The load is a point mass at the tip: J_n = m_L a_n - F_L.
+  // Backward: from the load inwards, fold everything outboard of joint k into (M_k, F_k).
+  // The load is a point mass at the tip: J_n = m_L a_n - F_L = m_L d_n + (m_L a0_n - F_L).
   Symmetric3 child = Symmetric3::scaledIdentity(load_inertia_);
-  Vec3 child_force = -toVec3(load_external_);
+  Vec3 child_force = toVec3(load_inertia_ * tip_known_acc_ - load_external_);
   for (int k = n - 1; k >= 0; --k) {
     LinkBlock& block = links_.of(k);
     const int i = LinkBlocks::lane(k);
@@ -96,12 +100,11 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
                           own.yy + child.yy - (x1.y * w1.y + x2.y * w2.y),
                           own.yz + child.yz - (x1.y * w1.z + x2.y * w2.z),
                           own.zz + child.zz - (x1.z * w1.z + x2.z * w2.z)};
-    // Bias force l^2/2 A beta - F + M_{k+1} l beta + f_{k+1}, and torque about joint k u x h + q with
-    // h = l^3/3 m' beta - (first moment of F) + l (M_{k+1} l beta + f_{k+1}).
-    const Vec3 passed = l * (child * block.beta[i]) + child_force;
-    const Vec3 h = block.own_moment[i] + l * passed;
+    // Bias force: the link's own plus F_{k+1}; torque about joint k u x h + q with h the link's own
+    // first moment plus l F_{k+1}.
+    const Vec3 h = block.own_moment[i] + l * child_force;
     const double g1 = block.q1[i] - dot(e2, h), g2 = block.q2[i] + dot(e1, h);
-    const Vec3 force = block.own_force[i] + passed - (g1 * x1 + g2 * x2);
+    const Vec3 force = block.own_force[i] + child_force - (g1 * x1 + g2 * x2);
     block.mass.set(i, m);
     block.bias.set(i, force);
     block.x1.set(i, x1);
@@ -111,25 +114,55 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
     child = m;
     child_force = force;
   }
-  // Forward: accelerations from the base outwards; the base translates without turning.
-  Vec3 acc = toVec3(links_.get(&LinkBlock::known_acc, 0));
-  double added_mass_power = 0.0;
+  // Forward, first the one serial recursion: y = y_g - X^T d_k (the transverse angular accelerations in
+  // the (e1, e2) basis) and C y = y2 e1 - y1 e2 make d_{k+1} = T_k d_k + c_k, with
+  // T_k = I + l (e2 x1^T - e1 x2^T) and c_k = l (y_g2 e1 - y_g1 e2), formed on vectors beforehand. The
+  // serial pass is then three short dot products per link.
+  for (int b = 0; b < links_.blocks(); ++b) {
+    LinkBlock& block = links_.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const double l = block.length[i];
+      const Vec3 p = l * block.e1[i], r = l * block.e2[i], x1 = block.x1[i], x2 = block.x2[i];
+      block.transfer_x.set(i, {1.0 + r.x * x1.x - p.x * x2.x, r.x * x1.y - p.x * x2.y, r.x * x1.z - p.x * x2.z});
+      block.transfer_y.set(i, {r.y * x1.x - p.y * x2.x, 1.0 + r.y * x1.y - p.y * x2.y, r.y * x1.z - p.y * x2.z});
+      block.transfer_z.set(i, {r.z * x1.x - p.z * x2.x, r.z * x1.y - p.z * x2.y, 1.0 + r.z * x1.z - p.z * x2.z});
+      block.transfer_bias.set(i, block.y2[i] * p - block.y1[i] * r);
+    }
+  }
+  Vec3 d = {0.0, 0.0, 0.0};  // the base translates as prescribed: d_0 = 0
   for (int k = 0; k < n; ++k) {
+    LinkBlock& block = links_.of(k);
+    const int i = LinkBlocks::lane(k);
+    block.delta_acc.set(i, d);
+    const Vec3 c = block.transfer_bias[i];
+    d = {dot(block.transfer_x[i], d) + c.x, dot(block.transfer_y[i], d) + c.y, dot(block.transfer_z[i], d) + c.z};
+  }
+  // Then, on vectors again, what follows from d_k: angular accelerations and the added-mass power.
+  double power[kBlockLanes] = {};
+  for (int b = 0; b < links_.blocks(); ++b) {
+    LinkBlock& block = links_.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const Vec3 delta = block.delta_acc[i], e1 = block.e1[i], e2 = block.e2[i], u = block.u[i];
+      const double y1 = block.y1[i] - dot(block.x1[i], delta), y2 = block.y2[i] - dot(block.x2[i], delta);
+      block.omega_rate.set(i, y1 * e1 + y2 * e2 + block.spin_acc[i] * u);
+      // u'' = omega' x u + beta, with omega' x u = C y = y2 e1 - y1 e2.
+      const Vec3 axis_acc = y2 * e1 - y1 * e2 + block.beta[i];
+      Vec3 added_base, added_axis;
+      addedMassPowerWeights(block.added[i], block.length[i], u, block.axis_rate[i], block.base_vel[i], added_base,
+                            added_axis);
+      power[i] += dot(added_base, block.known_acc[i] + delta) + dot(added_axis, axis_acc);
+    }
+  }
+  added_mass_power_ = 0.0;
+  for (int i = 0; i < kBlockLanes; ++i) added_mass_power_ += power[i];
+  // J_k = M_k d_k + F_k; at the base d_0 = 0: J_0 = F_0.
+  const int joints = all_joint_forces ? n : 1;
+  for (int k = 0; k < joints; ++k) {
     const LinkBlock& block = links_.of(k);
     const int i = LinkBlocks::lane(k);
-    if (all_joint_forces || k == 0) joint_force_.col(k) = toEigen(block.mass[i] * acc + block.bias[i]);
-    // Transverse angular accelerations in the (e1, e2) basis: y = -S^-1 (W^T a_k + g) = -X^T a_k + y_g.
-    const double y1 = block.y1[i] - dot(block.x1[i], acc), y2 = block.y2[i] - dot(block.x2[i], acc);
-    const Vec3 e1 = block.e1[i], e2 = block.e2[i];
-    const Vec3 omega_rate = y1 * e1 + y2 * e2 + block.spin_acc[i] * block.u[i];
-    rhs_.segment<3>(3 * k) << omega_rate.x, omega_rate.y, omega_rate.z;
-    // u_k'' = omega_k' x u_k + beta_k, with omega' x u = C y = y2 e1 - y1 e2.
-    const Vec3 axis_acc = y2 * e1 - y1 * e2 + block.beta[i];
-    added_mass_power += dot(block.added_base[i], acc) + dot(block.added_axis[i], axis_acc);
-    acc = acc + block.length[i] * axis_acc;
+    joint_force_.col(k) = toEigen(block.mass[i] * block.delta_acc[i] + block.bias[i]);
   }
-  added_mass_power_ = added_mass_power;
-  load_force_ = load_inertia_ * toEigen(acc) - load_external_;
+  load_force_ = load_inertia_ * (tip_known_acc_ + toEigen(d)) - load_external_;
 }
 
 }  // namespace cable_dynamics

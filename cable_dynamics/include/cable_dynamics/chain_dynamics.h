@@ -113,7 +113,7 @@ class ChainDynamics {
   void kinematics(const Eigen::VectorXd& x, const EndInputs& ends);
   void externalForces(const EndInputs& ends);
   void inertiaTensors();  ///< A_k per link (O(n))
-  /// Angular accelerations into rhs_, the load force, the added-mass power and the joint forces (all of
+  /// Angular accelerations into LinkBlock::omega_rate, the load force, the added-mass power and the joint forces (all of
   /// them, or only joint 0's, which the input power needs) by the articulated-body recursion (O(n);
   /// chain_recursive.cpp).
   void solveRecursive(bool all_joint_forces);
@@ -125,7 +125,8 @@ class ChainDynamics {
   /// Generalized forces (rhs of M omega' = rhs) at x: O(n), no mass matrix.
   void generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& out);
   void jointForces();
-  void writeRates(Eigen::VectorXd& xdot) const;  ///< x' from the solved state, after solve()
+  void writeRates(Eigen::VectorXd& xdot) const;
+  bool finiteAngularAccelerations() const;  ///< after solve(): every LinkBlock::omega_rate finite  ///< x' from the solved state, after solve()
   void computeJointTorques(const Eigen::VectorXd& x);
   void paperSpringTorques(const Eigen::VectorXd& x);
   void bendingSpringTorques(const Eigen::VectorXd& x);

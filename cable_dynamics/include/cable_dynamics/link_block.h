@@ -94,7 +94,7 @@ struct alignas(64) LinkBlock {
   Lanes3 beta;         ///< omega x u': u'' at zero angular acceleration [1/s^2]
   Lanes3 base_pos;     ///< base end [m]
   Lanes3 base_vel;     ///< [m/s]
-  Lanes3 known_acc;    ///< base-end acceleration at zero angular accelerations [m/s^2]
+  Lanes3 known_acc;    ///< a0: base-end acceleration at zero angular accelerations [m/s^2]
   double twist_rate[kBlockLanes];  ///< sigma' [rad/s]
   // External loads (ChainDynamics::externalForces, computeJointTorques).
   Lanes3 force;        ///< total external force on the link [N]
@@ -104,17 +104,20 @@ struct alignas(64) LinkBlock {
   // The recursion, each link on its own (chain_recursive.cpp).
   Lanes3 e1, e2;              ///< basis of the plane normal to u, e1 x e2 = u
   LanesSymmetric3 own_mass;   ///< l A, the link's translational inertia [kg]
-  Lanes3 own_force;           ///< l^2/2 A beta - F [N]
-  Lanes3 own_moment;          ///< l^3/3 (m' + m_a') beta - first moment of F [N m]
+  Lanes3 own_force;           ///< A (l a0 + l^2/2 beta) - F [N]
+  Lanes3 own_moment;          ///< (m' + m_a') (l^2/2 a0 + l^3/3 beta) - first moment of F [N m]
   double q1[kBlockLanes], q2[kBlockLanes];  ///< gyroscopic torque minus the joint torque on e1, e2 [N m]
   double spin_acc[kBlockLanes];             ///< angular acceleration about u [rad/s^2]
-  Lanes3 added_base;          ///< added-mass power = added_base.a_k + added_axis.u_k'' [kg/s]
-  Lanes3 added_axis;          ///< [kg m/s]
   // The recursion's backward pass.
   Lanes3 x1, x2;              ///< transverse accelerations y = y_g - X^T a_k [1/m]
   double y1[kBlockLanes], y2[kBlockLanes];  ///< y_g [rad/s^2]
   LanesSymmetric3 mass;       ///< M_k, effective mass of the outboard part at joint k [kg]
-  Lanes3 bias;                ///< f_k, its bias force [N]
+  Lanes3 bias;                ///< F_k: force on the outboard part J_k = M_k d_k + F_k [N]
+  // The recursion's forward pass.
+  Lanes3 transfer_x, transfer_y, transfer_z;  ///< rows of T_k: d_{k+1} = T_k d_k + c_k
+  Lanes3 transfer_bias;       ///< c_k [m/s^2]
+  Lanes3 delta_acc;           ///< d_k, base-end acceleration less the known one [m/s^2]
+  Lanes3 omega_rate;          ///< angular acceleration [rad/s^2]
 };
 
 /// The blocks of a chain of n links, with per-link access for the code that goes link by link.
