@@ -88,7 +88,7 @@ void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::Vector
   }
   if (!q.allFinite() || !qd.allFinite()) throw std::invalid_argument("state has a non-finite value");
   dynamics_.stateFromPaper(q, qd, x_);
-  balance_cached_ = false;
+  start_cached_ = false;
   // Continue azimuths from the given angles (straight-down links keep the azimuth they were given).
   Eigen::VectorXd psi(links());
   double sum = 0.0;
@@ -124,9 +124,12 @@ EndInputs CableSimulator::endsAt(double t) const {
 }
 
 double CableSimulator::energyBalance(const Eigen::VectorXd& x, double t, double& scale) {
-  const int n = links();
   double magnitude = 0.0;
-  const double mechanical = dynamics_.mechanicalEnergy(x, endsAt(t), magnitude);
+  return balance(x, dynamics_.mechanicalEnergy(x, endsAt(t), magnitude), magnitude, scale);
+}
+
+double CableSimulator::balance(const Eigen::VectorXd& x, double mechanical, double magnitude, double& scale) const {
+  const int n = links();
   const double dissipated = x(StateLayout::dissipated(n)), work = x(StateLayout::workInput(n));
   scale = magnitude + std::abs(dissipated) + std::abs(work);
   return mechanical + dissipated - work;
@@ -135,10 +138,12 @@ double CableSimulator::energyBalance(const Eigen::VectorXd& x, double t, double&
 bool CableSimulator::advance(double h) {
   ChainDynamics& f = dynamics_;
   const double t = time_;
-  // The balance after the previous accepted step is the one before this one, unless an input changed.
+  // The balance after the previous accepted step, and x' there, are the ones at the start of this one,
+  // unless an input changed.
   double scale_before = cached_scale_;
-  const double balance_before = balance_cached_ ? cached_balance_ : energyBalance(x_, t, scale_before);
-  balance_cached_ = false;
+  const bool start_known = start_cached_;
+  const double balance_before = start_known ? cached_balance_ : energyBalance(x_, t, scale_before);
+  start_cached_ = false;
   if (semi_implicit_) {
     if (!f.semiImplicitStep(x_, endsAt(t), h, stage_)) return false;
     x_ = stage_;
@@ -146,7 +151,7 @@ bool CableSimulator::advance(double h) {
     return acceptable(balance_before, scale_before);
   }
   // Classical RK4 on x' = f(t, x).
-  if (!f.derivative(x_, endsAt(t), k1_)) return false;
+  if (!start_known && !f.derivative(x_, endsAt(t), k1_)) return false;
   stage_ = x_ + 0.5 * h * k1_;
   if (!f.derivative(stage_, endsAt(t + 0.5 * h), k2_)) return false;
   stage_ = x_ + 0.5 * h * k2_;
@@ -173,11 +178,16 @@ bool CableSimulator::acceptable(double balance_before, double scale_before) {
   // The semi-implicit step balances energy only to first order (its power terms are taken at the start
   // of the step), so for it only the hard limits above apply.
   if (semi_implicit_) return true;
-  double scale_after = 0.0;
-  const double balance_after = energyBalance(x_, time_, scale_after);
+  // The energy after the step comes with the next step's first stage, x' at the new state: it is
+  // evaluated here and advance() takes it as k1 (as the "first same as last" schemes reuse a stage),
+  // unless an input changes in between. A state where x' is not finite fails here, not one step later.
+  if (!dynamics_.derivative(x_, endsAt(time_), k1_)) return false;
+  double magnitude = 0.0, scale_after = 0.0;
+  const double mechanical = dynamics_.solvedMechanicalEnergy(x_, magnitude);
+  const double balance_after = balance(x_, mechanical, magnitude, scale_after);
   const double scale = std::max(scale_before, scale_after) + 1e-9;
   if (balance_after - balance_before > kEnergyTolerance * scale) return false;
-  balance_cached_ = true;
+  start_cached_ = true;
   cached_balance_ = balance_after;
   cached_scale_ = scale_after;
   return true;
@@ -198,7 +208,7 @@ StepReport CableSimulator::step() {
     }
     x_ = x_start_;
     time_ = t0;
-    balance_cached_ = false;
+    start_cached_ = false;
   }
   dynamics_.paperCoordinates(x_, q_, qd_);
   std::ostringstream message;
@@ -227,19 +237,19 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
 
 void CableSimulator::setCurrentWorld(const Eigen::Vector3d& current) {
   dynamics_.current().setUniformWorld(current);
-  balance_cached_ = false;
+  start_cached_ = false;
 }
 
 void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
   external_load_ = true;
-  balance_cached_ = false;
+  start_cached_ = false;
   load_target_pos_ = position;
   load_target_vel_ = velocity;
 }
 
 void CableSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
   external_base_ = true;
-  balance_cached_ = false;
+  start_cached_ = false;
   base_target_pos_ = position;
   base_target_vel_ = velocity;
 }

@@ -493,6 +493,10 @@ CABLE_HOT_PATH void ChainDynamics::kineticAndPotential(double& kinetic, double& 
 
 double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude) {
   kinematics(x, ends);
+  return solvedMechanicalEnergy(x, magnitude);
+}
+
+double ChainDynamics::solvedMechanicalEnergy(const Eigen::VectorXd& x, double& magnitude) {
   double kinetic = 0.0, potential = 0.0;
   kineticAndPotential(kinetic, potential);
   const double elastic = elasticEnergy(x);

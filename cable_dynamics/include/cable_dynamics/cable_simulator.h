@@ -79,12 +79,15 @@ class CableSimulator {
   /// Energy balance (kinetic + potential + elastic + dissipated - work input) at x, time t [J]; `scale`
   /// gets the sum of the magnitudes of its terms [J].
   double energyBalance(const Eigen::VectorXd& x, double t, double& scale);
+  /// The same from the mechanical energy [J] and the sum of its terms' magnitudes [J].
+  double balance(const Eigen::VectorXd& x, double mechanical, double magnitude, double& scale) const;
 
   CableParams params_;
   ChainDynamics dynamics_;
   double dt_;
   bool semi_implicit_;
-  bool balance_cached_ = false;  ///< cached_balance_ holds the energy balance of the present state
+  /// cached_balance_ holds the energy balance of the present state and k1_ its x' (nothing changed since)
+  bool start_cached_ = false;
   double cached_balance_ = 0.0, cached_scale_ = 0.0;
   double time_ = 0.0;
   double omega_limit_;

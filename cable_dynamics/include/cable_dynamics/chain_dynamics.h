@@ -102,6 +102,10 @@ class ChainDynamics {
   /// three terms' absolute values [J].
   double mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude);
 
+  /// mechanicalEnergy() of the state x that the last derivative() or evaluate() call was given, from
+  /// the kinematics that call left (no second pass over the chain).
+  double solvedMechanicalEnergy(const Eigen::VectorXd& x, double& magnitude);
+
   /// Paper coordinates (3n) and rates (3n) of state x; psi continues from the azimuth reference.
   void paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& q, Eigen::VectorXd& qd) const;
 
