@@ -88,18 +88,19 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
     const double half = block.half_moment[i];
     const Vec3 w1 = -(l * m_e2 + half * e2);
     const Vec3 w2 = l * m_e1 + half * e1;
+    // X = W S^-1 = V / det with V = W adj(S), and M_k = l A + M_{k+1} - X W^T = l A + M_{k+1} - Z / det
+    // with Z = V W^T: everything but one multiplication can go on while the division runs, which
+    // shortens the serial chain from M_{k+1} to M_k.
     const double inv_det = 1.0 / (s_a * s_d - s_b * s_b);
-    const double s11 = s_d * inv_det, s12 = -s_b * inv_det, s22 = s_a * inv_det;
-    const Vec3 x1 = s11 * w1 + s12 * w2;  // X = W S^-1
-    const Vec3 x2 = s12 * w1 + s22 * w2;
-    // M_k = l A + M_{k+1} - X W^T, its six entries.
+    const Vec3 v1 = s_d * w1 - s_b * w2, v2 = s_a * w2 - s_b * w1;
     const Symmetric3 own = block.own_mass[i];
-    const Symmetric3 m = {own.xx + child.xx - (x1.x * w1.x + x2.x * w2.x),
-                          own.xy + child.xy - (x1.x * w1.y + x2.x * w2.y),
-                          own.xz + child.xz - (x1.x * w1.z + x2.x * w2.z),
-                          own.yy + child.yy - (x1.y * w1.y + x2.y * w2.y),
-                          own.yz + child.yz - (x1.y * w1.z + x2.y * w2.z),
-                          own.zz + child.zz - (x1.z * w1.z + x2.z * w2.z)};
+    const Symmetric3 sum = {own.xx + child.xx, own.xy + child.xy, own.xz + child.xz,
+                            own.yy + child.yy, own.yz + child.yz, own.zz + child.zz};
+    const Symmetric3 z = {v1.x * w1.x + v2.x * w2.x, v1.x * w1.y + v2.x * w2.y, v1.x * w1.z + v2.x * w2.z,
+                          v1.y * w1.y + v2.y * w2.y, v1.y * w1.z + v2.y * w2.z, v1.z * w1.z + v2.z * w2.z};
+    const Symmetric3 m = {sum.xx - inv_det * z.xx, sum.xy - inv_det * z.xy, sum.xz - inv_det * z.xz,
+                          sum.yy - inv_det * z.yy, sum.yz - inv_det * z.yz, sum.zz - inv_det * z.zz};
+    const Vec3 x1 = inv_det * v1, x2 = inv_det * v2;
     // Bias force: the link's own plus F_{k+1}; torque about joint k u x h + q with h the link's own
     // first moment plus l F_{k+1}.
     const Vec3 h = block.own_moment[i] + l * child_force;
@@ -109,8 +110,8 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
     block.bias.set(i, force);
     block.x1.set(i, x1);
     block.x2.set(i, x2);
-    block.y1[i] = -(s11 * g1 + s12 * g2);
-    block.y2[i] = -(s12 * g1 + s22 * g2);
+    block.y1[i] = -inv_det * (s_d * g1 - s_b * g2);  // y_g = -S^-1 g
+    block.y2[i] = -inv_det * (s_a * g2 - s_b * g1);
     child = m;
     child_force = force;
   }
