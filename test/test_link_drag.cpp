@@ -1,6 +1,6 @@
 // The uniform-current shortcut of the link drag (one square root per Gauss point, eight links of a
-// block at once) against the point-by-point Morison quadrature, and the quadrature against a fine midpoint rule of the same
-// integrand (an integration written here independently of fluid.cpp's).
+// block at once) against the point-by-point Morison quadrature, and the quadrature against a fine
+// midpoint rule of the same integrand (an integration written here independently of fluid.cpp's).
 #include <gtest/gtest.h>
 
 #include <cmath>

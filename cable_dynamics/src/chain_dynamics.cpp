@@ -241,8 +241,9 @@ void ChainDynamics::assembleForces() {
     outboard_[k] = outboard;
     const double l = props_.length(k);
     const Eigen::Matrix3d& a = tensor_[k];
-    inertial_force_.col(k) = a * (l * links_.get(&LinkBlock::known_acc, k) + 0.5 * l * l * links_.get(&LinkBlock::beta, k));
-    inertial_moment_.col(k) = a * (0.5 * l * l * links_.get(&LinkBlock::known_acc, k) + (l * l * l / 3.0) * links_.get(&LinkBlock::beta, k));
+    const Eigen::Vector3d known = links_.get(&LinkBlock::known_acc, k), beta = links_.get(&LinkBlock::beta, k);
+    inertial_force_.col(k) = a * (l * known + 0.5 * l * l * beta);
+    inertial_moment_.col(k) = a * (0.5 * l * l * known + (l * l * l / 3.0) * beta);
     // Generalized force of link k's angular velocity: moment about joint k of everything outboard of it.
     const Eigen::Vector3d lever = l * outboard_force + links_.get(&LinkBlock::moment, k) - inertial_moment_.col(k);
     const Eigen::Vector3d omega = links_.get(&LinkBlock::omega, k), axis = links_.get(&LinkBlock::u, k);
@@ -608,7 +609,7 @@ void ChainDynamics::bendingSpringTorques(const Eigen::VectorXd& x) {
   // Joint k couples link k-1 (the fixed base direction, straight down, for k = 0) and link k.
   const LinkProperties& p = props_;
   for (int k = 0; k < n_; ++k) {
-    const Eigen::Vector3d prev = k > 0 ? Eigen::Vector3d(links_.get(&LinkBlock::u, k - 1)) : kDown;
+    const Eigen::Vector3d prev = k > 0 ? links_.get(&LinkBlock::u, k - 1) : kDown;
     const Eigen::Vector3d axis = links_.get(&LinkBlock::u, k);
     const JointGeometry g =
         jointGeometry(prev, axis, x(StateLayout::twist(k)), k > 0 ? x(StateLayout::twist(k - 1)) : 0.0);
@@ -618,7 +619,8 @@ void ChainDynamics::bendingSpringTorques(const Eigen::VectorXd& x) {
     const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + g.cosine);
     const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
     // Dampers on the relative angular velocity: across the mean axis (bending) and about it (twist).
-    const Eigen::Vector3d relative = links_.get(&LinkBlock::omega, k) - (k > 0 ? Eigen::Vector3d(links_.get(&LinkBlock::omega, k - 1)) : Eigen::Vector3d::Zero());
+    const Eigen::Vector3d relative =
+        links_.get(&LinkBlock::omega, k) - (k > 0 ? links_.get(&LinkBlock::omega, k - 1) : Eigen::Vector3d::Zero());
     const Eigen::Vector3d direction = (prev + axis).normalized();
     const double about = relative.dot(direction);
     const Eigen::Vector3d damper =

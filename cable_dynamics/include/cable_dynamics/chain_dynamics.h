@@ -117,9 +117,9 @@ class ChainDynamics {
   void kinematics(const Eigen::VectorXd& x, const EndInputs& ends);
   void externalForces(const EndInputs& ends);
   void inertiaTensors();  ///< A_k per link (O(n))
-  /// Angular accelerations into LinkBlock::omega_rate, the load force, the added-mass power and the joint forces (all of
-  /// them, or only joint 0's, which the input power needs) by the articulated-body recursion (O(n);
-  /// chain_recursive.cpp).
+  /// Angular accelerations into LinkBlock::omega_rate, the load force, the added-mass power and the
+  /// joint forces (all of them, or only joint 0's, which the input power needs) by the articulated-body
+  /// recursion (O(n); chain_recursive.cpp).
   void solveRecursive(bool all_joint_forces);
   void fillLinkConstants();  ///< the constants of links_, and the padding lanes
   /// Power of the added-mass force on link k [W], from its base-end and axis accelerations.
@@ -129,8 +129,8 @@ class ChainDynamics {
   /// Generalized forces (rhs of M omega' = rhs) at x: O(n), no mass matrix.
   void generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& out);
   void jointForces();
-  void writeRates(Eigen::VectorXd& xdot) const;
-  bool finiteAngularAccelerations() const;  ///< after solve(): every LinkBlock::omega_rate finite  ///< x' from the solved state, after solve()
+  void writeRates(Eigen::VectorXd& xdot) const;  ///< x' from the solved state, after solve()
+  bool finiteAngularAccelerations() const;       ///< after solve(): every LinkBlock::omega_rate finite
   void computeJointTorques(const Eigen::VectorXd& x);
   void paperSpringTorques(const Eigen::VectorXd& x);
   void bendingSpringTorques(const Eigen::VectorXd& x);

@@ -51,11 +51,6 @@ struct Symmetric3 {
   Vec3 operator*(const Vec3& v) const {
     return {xx * v.x + xy * v.y + xz * v.z, xy * v.x + yy * v.y + yz * v.z, xz * v.x + yz * v.y + zz * v.z};
   }
-  Eigen::Matrix3d dense() const {
-    Eigen::Matrix3d m;
-    m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-    return m;
-  }
 };
 
 /// One symmetric 3x3 quantity of the eight links of a block.
@@ -136,8 +131,6 @@ class LinkBlocks {
   /// 3-vector `field` of link k, e.g. get(&LinkBlock::u, k).
   Eigen::Vector3d get(Lanes3 LinkBlock::*field, int k) const { return toEigen((of(k).*field)[lane(k)]); }
   void set(Lanes3 LinkBlock::*field, int k, const Eigen::Vector3d& v) { (of(k).*field).set(lane(k), toVec3(v)); }
-  double get(double (LinkBlock::*field)[kBlockLanes], int k) const { return (of(k).*field)[lane(k)]; }
-  void set(double (LinkBlock::*field)[kBlockLanes], int k, double v) { (of(k).*field)[lane(k)] = v; }
 
  private:
   std::vector<LinkBlock> blocks_;  // C++17's allocator honours the 64-byte alignment
