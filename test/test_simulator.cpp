@@ -42,7 +42,9 @@ double tipPeriod(CableSimulator& sim, double duration) {
   SimulationSnapshot s;
   const long steps = std::lround(duration / sim.dt());
   for (long i = 0; i <= steps; ++i) {
-    if (i > 0) EXPECT_TRUE(sim.step().ok);
+    if (i > 0) {
+      EXPECT_TRUE(sim.step().ok);
+    }
     sim.snapshot(s);
     t.push_back(s.time);
     y.push_back(s.chain.ends(1, sim.links()));

@@ -8,6 +8,7 @@
 /// axis) couples to nothing, and only the two transverse components move the link, so the joint's
 /// 3x3 block reduces to a 2x2 one in a basis (e1, e2) of the plane normal to the link. Every operation
 /// is on 3-vectors, symmetric 3x3 matrices and 2x2 matrices, with no heap allocation.
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -106,8 +107,10 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
     const Vec3 h = block.own_moment[i] + l * child_force;
     const double g1 = block.q1[i] - dot(e2, h), g2 = block.q2[i] + dot(e1, h);
     const Vec3 force = block.own_force[i] + child_force - (g1 * x1 + g2 * x2);
-    block.mass.set(i, m);
-    block.bias.set(i, force);
+    if (all_joint_forces) {  // for J_k = M_k d_k + F_k after the forward pass (J_0 = F_0 needs neither)
+      block.mass.set(i, m);
+      block.bias.set(i, force);
+    }
     block.x1.set(i, x1);
     block.x2.set(i, x2);
     block.y1[i] = -inv_det * (s_d * g1 - s_b * g2);  // y_g = -S^-1 g
@@ -115,28 +118,29 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
     child = m;
     child_force = force;
   }
+  const Vec3 base_force = child_force;  // F_0
   // Forward, first the one serial recursion: y = y_g - X^T d_k (the transverse angular accelerations in
   // the (e1, e2) basis) and C y = y2 e1 - y1 e2 make d_{k+1} = T_k d_k + c_k, with
-  // T_k = I + l (e2 x1^T - e1 x2^T) and c_k = l (y_g2 e1 - y_g1 e2), formed on vectors beforehand. The
-  // serial pass is then three short dot products per link.
+  // T_k = I + l (e2 x1^T - e1 x2^T) and c_k = l (y_g2 e1 - y_g1 e2), formed on vectors for a block's
+  // links just before its turn. The serial pass is then three short dot products per link.
+  Vec3 d = {0.0, 0.0, 0.0};  // the base translates as prescribed: d_0 = 0
   for (int b = 0; b < links_.blocks(); ++b) {
     LinkBlock& block = links_.block(b);
+    Lanes3 row_x, row_y, row_z, offset;  // T_k's rows and c_k
     for (int i = 0; i < kBlockLanes; ++i) {
       const double l = block.length[i];
       const Vec3 p = l * block.e1[i], r = l * block.e2[i], x1 = block.x1[i], x2 = block.x2[i];
-      block.transfer_x.set(i, {1.0 + r.x * x1.x - p.x * x2.x, r.x * x1.y - p.x * x2.y, r.x * x1.z - p.x * x2.z});
-      block.transfer_y.set(i, {r.y * x1.x - p.y * x2.x, 1.0 + r.y * x1.y - p.y * x2.y, r.y * x1.z - p.y * x2.z});
-      block.transfer_z.set(i, {r.z * x1.x - p.z * x2.x, r.z * x1.y - p.z * x2.y, 1.0 + r.z * x1.z - p.z * x2.z});
-      block.transfer_bias.set(i, block.y2[i] * p - block.y1[i] * r);
+      row_x.set(i, {1.0 + r.x * x1.x - p.x * x2.x, r.x * x1.y - p.x * x2.y, r.x * x1.z - p.x * x2.z});
+      row_y.set(i, {r.y * x1.x - p.y * x2.x, 1.0 + r.y * x1.y - p.y * x2.y, r.y * x1.z - p.y * x2.z});
+      row_z.set(i, {r.z * x1.x - p.z * x2.x, r.z * x1.y - p.z * x2.y, 1.0 + r.z * x1.z - p.z * x2.z});
+      offset.set(i, block.y2[i] * p - block.y1[i] * r);
     }
-  }
-  Vec3 d = {0.0, 0.0, 0.0};  // the base translates as prescribed: d_0 = 0
-  for (int k = 0; k < n; ++k) {
-    LinkBlock& block = links_.of(k);
-    const int i = LinkBlocks::lane(k);
-    block.delta_acc.set(i, d);
-    const Vec3 c = block.transfer_bias[i];
-    d = {dot(block.transfer_x[i], d) + c.x, dot(block.transfer_y[i], d) + c.y, dot(block.transfer_z[i], d) + c.z};
+    const int count = std::min(kBlockLanes, n - b * kBlockLanes);
+    for (int i = 0; i < count; ++i) {
+      block.delta_acc.set(i, d);
+      const Vec3 c = offset[i];
+      d = {dot(row_x[i], d) + c.x, dot(row_y[i], d) + c.y, dot(row_z[i], d) + c.z};
+    }
   }
   // Then, on vectors again, what follows from d_k: angular accelerations and the added-mass power.
   double power[kBlockLanes] = {};
@@ -157,8 +161,8 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
   added_mass_power_ = 0.0;
   for (int i = 0; i < kBlockLanes; ++i) added_mass_power_ += power[i];
   // J_k = M_k d_k + F_k; at the base d_0 = 0: J_0 = F_0.
-  const int joints = all_joint_forces ? n : 1;
-  for (int k = 0; k < joints; ++k) {
+  joint_force_.col(0) = toEigen(base_force);
+  for (int k = 1; all_joint_forces && k < n; ++k) {
     const LinkBlock& block = links_.of(k);
     const int i = LinkBlocks::lane(k);
     joint_force_.col(k) = toEigen(block.mass[i] * block.delta_acc[i] + block.bias[i]);

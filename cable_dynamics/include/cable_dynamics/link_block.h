@@ -106,11 +106,10 @@ struct alignas(64) LinkBlock {
   // The recursion's backward pass.
   Lanes3 x1, x2;              ///< transverse accelerations y = y_g - X^T a_k [1/m]
   double y1[kBlockLanes], y2[kBlockLanes];  ///< y_g [rad/s^2]
-  LanesSymmetric3 mass;       ///< M_k, effective mass of the outboard part at joint k [kg]
-  Lanes3 bias;                ///< F_k: force on the outboard part J_k = M_k d_k + F_k [N]
+  LanesSymmetric3 mass;       ///< M_k, effective mass of the outboard part at joint k [kg] (when all
+                              ///< joint forces are asked for)
+  Lanes3 bias;                ///< F_k: force on the outboard part J_k = M_k d_k + F_k [N] (the same)
   // The recursion's forward pass.
-  Lanes3 transfer_x, transfer_y, transfer_z;  ///< rows of T_k: d_{k+1} = T_k d_k + c_k
-  Lanes3 transfer_bias;       ///< c_k [m/s^2]
   Lanes3 delta_acc;           ///< d_k, base-end acceleration less the known one [m/s^2]
   Lanes3 omega_rate;          ///< angular acceleration [rad/s^2]
 };
