@@ -93,8 +93,6 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   tensor_.assign(n, Eigen::Matrix3d::Zero());
   outboard_.assign(n, Eigen::Matrix3d::Zero());
   column_.assign(n, Eigen::Matrix3d::Zero());
-  mass_matrix_.setZero(3 * n, 3 * n);
-  for (Eigen::MatrixXd* m : {&jacobian_velocity_, &jacobian_rotation_, &system_}) m->setZero(3 * n, 3 * n);
   for (Eigen::VectorXd* v : {&force_plus_, &force_minus_, &velocity_, &step_rhs_, &delta_}) v->setZero(3 * n);
   perturbed_.setZero(StateLayout::size(n));
   recursive_ = params.simulation.formulation == "recursive";
@@ -103,9 +101,8 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   fillLinkConstants();
   paper_q_.setZero(3 * n);
   paper_qd_.setZero(3 * n);
-  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(3 * n);
   rhs_.setZero(3 * n);
-  llt_ = Eigen::LLT<Eigen::MatrixXd>(3 * n);
+  if (!recursive_ || params.simulation.integrator == "semi_implicit") allocateDense();
 }
 
 void ChainDynamics::fillLinkConstants() {
@@ -396,7 +393,22 @@ void ChainDynamics::generalizedForces(const Eigen::VectorXd& x, const EndInputs&
   out = rhs_;
 }
 
+void ChainDynamics::setRecursive(bool recursive) {
+  recursive_ = recursive;
+  if (!recursive) allocateDense();
+}
+
+void ChainDynamics::allocateDense() {
+  // Five 3n x 3n matrices: 360 MB at n = 1000, which the recursive formulation with RK4 never touches.
+  const int dof = 3 * n_;
+  if (mass_matrix_.rows() == dof) return;
+  for (Eigen::MatrixXd* m : {&mass_matrix_, &jacobian_velocity_, &jacobian_rotation_, &system_}) m->setZero(dof, dof);
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(dof);
+  llt_ = Eigen::LLT<Eigen::MatrixXd>(dof);
+}
+
 bool ChainDynamics::semiImplicitStep(const Eigen::VectorXd& x, const EndInputs& ends, double h, Eigen::VectorXd& next) {
+  allocateDense();  // a no-op unless the configuration asked for neither the dense formulation nor this integrator
   assert(x.size() == stateSize() && next.size() == stateSize());
   if (!x.allFinite()) return false;
   const int n = n_, dof = 3 * n;

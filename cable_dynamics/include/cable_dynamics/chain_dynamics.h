@@ -82,7 +82,7 @@ class ChainDynamics {
 
   /// true: O(n) articulated-body recursion; false: dense mass matrix and Cholesky (O(n^3)).
   bool recursive() const { return recursive_; }
-  void setRecursive(bool recursive) { recursive_ = recursive; }
+  void setRecursive(bool recursive);
 
   /// x' at state x (size stateSize()). Returns false when the state is not finite or the mass matrix
   /// is not positive definite; xdot is then unspecified.
@@ -121,7 +121,10 @@ class ChainDynamics {
   /// joint forces (all of them, or only joint 0's, which the input power needs) by the articulated-body
   /// recursion (O(n); chain_recursive.cpp).
   void solveRecursive(bool all_joint_forces);
-  void fillLinkConstants();  ///< the constants of links_, and the padding lanes
+  void fillLinkConstants();
+  /// Sizes the dense formulation's and the semi-implicit integrator's 3n x 3n workspace, once: at
+  /// construction when the configuration uses either, else on first use (outside any step's loop).
+  void allocateDense();  ///< the constants of links_, and the padding lanes
   /// Power of the added-mass force on link k [W], from its base-end and axis accelerations.
   double addedMassPower(int k, const Eigen::Vector3d& base_acc, const Eigen::Vector3d& axis_acc) const;
   void assembleForces();  ///< tensors, outboard sums and the right-hand side rhs_ (O(n))
