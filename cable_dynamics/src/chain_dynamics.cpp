@@ -77,11 +77,6 @@ ChainDynamics::ChainDynamics(const CableParams& params)
       azimuths_(params.links) {
   const int n = n_;
   const double radius = 0.5 * diameter_;
-  mass_per_length_ = props_.mass.cwiseQuotient(props_.length);
-  added_per_length_ = Eigen::VectorXd::Constant(n, params.fluid.added_mass * density_ * M_PI * radius * radius);
-  weight_ = props_.gravity * props_.submerged_mass;
-  // The translation integral over each link already holds m l^2/12; the rest of I_T is the thickness.
-  thick_transverse_ = props_.mass * (radius * radius / 4.0);
   load_inertia_ = props_.load_mass + params.load.added_mass;
   load_weight_ = props_.gravity * props_.load_submerged_mass;
   paper_psi_ = Eigen::VectorXd::Zero(n);
@@ -98,14 +93,14 @@ ChainDynamics::ChainDynamics(const CableParams& params)
   recursive_ = params.simulation.formulation == "recursive";
   has_springs_ = props_.stiffness_elevation.any() || props_.stiffness_azimuth.any() || props_.stiffness_torsion.any() ||
                  props_.damping_elevation.any() || props_.damping_azimuth.any() || props_.damping_torsion.any();
-  fillLinkConstants();
+  fillLinkConstants(params.fluid.added_mass * density_ * M_PI * radius * radius, radius);
   paper_q_.setZero(3 * n);
   paper_qd_.setZero(3 * n);
   rhs_.setZero(3 * n);
   if (!recursive_ || params.simulation.integrator == "semi_implicit") allocateDense();
 }
 
-void ChainDynamics::fillLinkConstants() {
+void ChainDynamics::fillLinkConstants(double added_per_length, double radius) {
   links_ = LinkBlocks(n_);
   for (int b = 0; b < links_.blocks(); ++b) {
     LinkBlock& block = links_.block(b);
@@ -115,14 +110,15 @@ void ChainDynamics::fillLinkConstants() {
       if (k >= n_) continue;  // zero length and mass: adds nothing anywhere
       const double l = props_.length(k);
       block.length[i] = l;
-      block.mass_per_length[i] = mass_per_length_(k);
-      block.added[i] = added_per_length_(k);
-      block.across[i] = mass_per_length_(k) + added_per_length_(k);
-      block.weight[i] = weight_(k);
+      block.mass_per_length[i] = props_.mass(k) / l;
+      block.added[i] = added_per_length;
+      block.across[i] = block.mass_per_length[i] + added_per_length;
+      block.weight[i] = props_.gravity * props_.submerged_mass(k);
       block.half_moment[i] = 0.5 * l * l * block.across[i];
       block.third_moment[i] = l * l * l / 3.0 * block.across[i];
-      block.thick_transverse[i] = thick_transverse_(k);
-      block.own_transverse[i] = block.third_moment[i] + thick_transverse_(k);
+      // The translation integral over the link already holds m l^2/12; the rest of I_T is the thickness.
+      block.thick_transverse[i] = props_.mass(k) * (radius * radius / 4.0);
+      block.own_transverse[i] = block.third_moment[i] + block.thick_transverse[i];
       block.polar[i] = props_.inertia_polar(k);
       block.inverse_polar[i] = 1.0 / props_.inertia_polar(k);
     }
@@ -223,7 +219,8 @@ void ChainDynamics::inertiaTensors() {
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int k = 0; k < n_; ++k) {
     const Eigen::Vector3d axis = links_.get(&LinkBlock::u, k);
-    tensor_[k] = mass_per_length_(k) * identity + added_per_length_(k) * (identity - axis * axis.transpose());
+    tensor_[k] = links_.get(&LinkBlock::mass_per_length, k) * identity +
+                 links_.get(&LinkBlock::added, k) * (identity - axis * axis.transpose());
   }
 }
 
@@ -244,7 +241,7 @@ void ChainDynamics::assembleForces() {
     // Generalized force of link k's angular velocity: moment about joint k of everything outboard of it.
     const Eigen::Vector3d lever = l * outboard_force + links_.get(&LinkBlock::moment, k) - inertial_moment_.col(k);
     const Eigen::Vector3d omega = links_.get(&LinkBlock::omega, k), axis = links_.get(&LinkBlock::u, k);
-    const double ip = props_.inertia_polar(k), it = thick_transverse_(k);
+    const double ip = props_.inertia_polar(k), it = links_.get(&LinkBlock::thick_transverse, k);
     const Eigen::Vector3d spin_axis = axis * axis.dot(omega);
     const Eigen::Vector3d angular_momentum = it * (omega - spin_axis) + ip * spin_axis;
     rhs_.segment<3>(3 * k) = axis.cross(lever) + links_.get(&LinkBlock::torque, k) - omega.cross(angular_momentum);
@@ -265,7 +262,8 @@ void ChainDynamics::assembleMass() {
     const Eigen::Matrix3d diagonal = -uj * ((l * l) * ((l / 3.0) * tensor_[j] + outboard_[j])) * uj;
     const Eigen::Vector3d axis = links_.get(&LinkBlock::u, j);
     const Eigen::Matrix3d rotation_inertia =
-        thick_transverse_(j) * (identity - axis * axis.transpose()) + props_.inertia_polar(j) * axis * axis.transpose();
+        links_.get(&LinkBlock::thick_transverse, j) * (identity - axis * axis.transpose()) +
+        props_.inertia_polar(j) * axis * axis.transpose();
     mass_matrix_.block<3, 3>(3 * j, 3 * j) = diagonal + rotation_inertia;
     for (int r = 0; r < j; ++r) {
       const Eigen::Matrix3d block = -props_.length(r) * skew(links_.get(&LinkBlock::u, r)) * column_[j];

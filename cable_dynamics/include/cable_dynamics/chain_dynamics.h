@@ -121,10 +121,11 @@ class ChainDynamics {
   /// joint forces (all of them, or only joint 0's, which the input power needs) by the articulated-body
   /// recursion (O(n); chain_recursive.cpp).
   void solveRecursive(bool all_joint_forces);
-  void fillLinkConstants();
+  /// The constants of links_ (normal added mass per length [kg/m], cable radius [m]), and the padding lanes.
+  void fillLinkConstants(double added_per_length, double radius);
   /// Sizes the dense formulation's and the semi-implicit integrator's 3n x 3n workspace, once: at
   /// construction when the configuration uses either, else on first use (outside any step's loop).
-  void allocateDense();  ///< the constants of links_, and the padding lanes
+  void allocateDense();
   /// Power of the added-mass force on link k [W], from its base-end and axis accelerations.
   double addedMassPower(int k, const Eigen::Vector3d& base_acc, const Eigen::Vector3d& axis_acc) const;
   void assembleForces();  ///< tensors, outboard sums and the right-hand side rhs_ (O(n))
@@ -148,11 +149,7 @@ class ChainDynamics {
   LinkDrag drag_;
   double load_drag_area_, load_coupling_stiffness_, load_coupling_damping_;
 
-  // Per link constants.
-  Eigen::VectorXd mass_per_length_;      ///< [kg/m]
-  Eigen::VectorXd added_per_length_;     ///< normal added mass [kg/m]
-  Eigen::VectorXd weight_;               ///< submerged weight ms g [N]
-  Eigen::VectorXd thick_transverse_;     ///< thickness part of I_T, m r^2/4 [kg m^2]
+  // Per link constants: in links_ (LinkBlock's first fields).
   double load_inertia_;                  ///< load mass plus its added mass [kg]
   double load_weight_;                   ///< [N]
   AzimuthTracker azimuths_;              ///< continuous paper azimuths, followed after each accepted step
