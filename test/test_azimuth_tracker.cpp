@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "cable_dynamics/azimuth_tracker.h"
+#include "cable_dynamics/dynamics/azimuth_tracker.h"
 
 namespace cd = cable_dynamics;
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "cable_dynamics/cable_model_app.h"
+#include "cable_dynamics/tools/cable_model_app.h"
 
 namespace {
 

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 #include <urdf_parser/urdf_parser.h>
 
-#include "cable_dynamics/cable_urdf.h"
-#include "cable_dynamics/config_loader.h"
+#include "cable_dynamics/urdf/cable_urdf.h"
+#include "cable_dynamics/params/config_loader.h"
 
 using namespace cable_dynamics;
 
@@ -11,7 +11,7 @@ TEST(CableUrdf, ParsesBackWithEveryLinkJointAndInertia) {
   const CableParams params = loadConfigString("cable: {links: 4, length: 8.0, diameter: 0.03, mass_per_length: 0.5}");
   CableFrameNames names;
   names.prefix = "umbilical/";
-  const std::string xml = cableUrdf(params, names);
+  const std::string xml = cableUrdf(deriveLinkProperties(params), names);
   const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
   ASSERT_TRUE(model) << xml;
   EXPECT_EQ(model->getRoot()->name, "umbilical/cable_paper");

@@ -5,12 +5,12 @@
 
 #include <gtest/gtest.h>
 
-#include "cable_dynamics/cable_simulator.h"
-#include "cable_dynamics/chain_dynamics.h"
-#include "cable_dynamics/config_loader.h"
-#include "cable_dynamics/elastic_joints.h"
-#include "cable_dynamics/paper_model.h"
-#include "cable_dynamics/states.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+#include "cable_dynamics/dynamics/chain_dynamics.h"
+#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/dynamics/elastic_joints.h"
+#include "cable_dynamics/dynamics/paper_model.h"
+#include "cable_dynamics/params/states.h"
 
 using namespace cable_dynamics;
 

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cable_dynamics/config_loader.h"
+#include "cable_dynamics/params/config_loader.h"
 
 using cable_dynamics::CableParams;
 using cable_dynamics::ConfigError;

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cable_dynamics/cable_simulator.h"
-#include "cable_dynamics/config_loader.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+#include "cable_dynamics/params/config_loader.h"
 
 using namespace cable_dynamics;
 

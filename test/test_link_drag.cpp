@@ -8,7 +8,7 @@
 
 #include <Eigen/Geometry>
 
-#include "cable_dynamics/fluid.h"
+#include "cable_dynamics/dynamics/fluid.h"
 
 namespace cd = cable_dynamics;
 

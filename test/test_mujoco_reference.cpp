@@ -7,9 +7,9 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "cable_dynamics/cable_simulator.h"
-#include "cable_dynamics/config_loader.h"
-#include "cable_dynamics/states.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/params/states.h"
 #include "reference/mujoco_chain.h"
 
 using namespace cable_dynamics;

@@ -7,9 +7,9 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include "cable_dynamics/config_loader.h"
-#include "cable_dynamics/states.h"
-#include "cable_dynamics/paper_model.h"
+#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/params/states.h"
+#include "cable_dynamics/dynamics/paper_model.h"
 
 using namespace cable_dynamics;
 

@@ -8,10 +8,11 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include "cable_dynamics/cable_simulator.h"
-#include "cable_dynamics/config_loader.h"
-#include "cable_dynamics/paper_model.h"
-#include "cable_dynamics/states.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/dynamics/frames.h"
+#include "cable_dynamics/dynamics/paper_model.h"
+#include "cable_dynamics/params/states.h"
 
 using namespace cable_dynamics;
 
@@ -319,7 +320,7 @@ TEST(Simulator, ReusedFirstStageFollowsChangedInputs) {
   for (int i = 0; i < 5; ++i) ASSERT_TRUE(sim.step().ok);
   ChainDynamics reference(params);
   const Eigen::Vector3d current(-0.8, 0.5, 0.0);  // world frame [m/s]
-  sim.setCurrentWorld(current);
+  sim.setCurrent(current);
   reference.current().setUniformWorld(current);
   Eigen::VectorXd expected = plainRk4Step(reference, sim.state(), EndInputs{}, sim.dt());
   ASSERT_TRUE(sim.step().ok);
@@ -328,7 +329,7 @@ TEST(Simulator, ReusedFirstStageFollowsChangedInputs) {
   EndInputs moved;
   moved.base_position = Eigen::Vector3d(0.05, 0.0, 0.0);  // paper frame [m]
   moved.base_velocity = Eigen::Vector3d(0.5, -0.2, 0.0);  // [m/s]
-  sim.setBaseTarget(moved.base_position, moved.base_velocity);
+  sim.setBaseTarget(paperToWorld(moved.base_position), paperToWorld(moved.base_velocity));  // inputs: world axes
   expected = plainRk4Step(reference, sim.state(), moved, sim.dt());
   ASSERT_TRUE(sim.step().ok);
   EXPECT_LT((sim.state() - expected).cwiseAbs().maxCoeff(), 1e-13 * sim.state().cwiseAbs().maxCoeff());

@@ -61,31 +61,19 @@ cable_add_pytest(presets test/test_presets.py
   CABLE_SIM_BIN=$<TARGET_FILE:cable_sim> CABLE_MODEL_BIN=$<TARGET_FILE:cable_model>)
 add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim cable_model)
 
-# The node over ROS: rates, outputs, input guards, bad parameters.
-add_rostest_gtest(test_cable_node test/cable_node.test test/node/test_cable_node.cpp)
-target_include_directories(test_cable_node PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
-target_link_libraries(test_cable_node ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
-add_dependencies(test_cable_node cable_msgs_generate_messages_cpp cable_dynamics_node)
-add_rostest(test/bad_config.test DEPENDENCIES cable_dynamics_node)
-add_rostest(test/sim_time.test DEPENDENCIES cable_dynamics_node)
-# rostest finds the Python test nodes of this package in the devel space through these links.
-foreach(script test_bad_config.py test_sim_time.py)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
-    ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
-endforeach()
+# The node over ROS (rostest): test/node/node_tests.cmake.
+include(${CMAKE_CURRENT_LIST_DIR}/node/node_tests.cmake)
 
 # The cable URDF parses back with urdfdom.
 catkin_add_gtest(test_cable_urdf test/test_cable_urdf.cpp)
 target_link_libraries(test_cable_urdf cable_dynamics_urdf ${GTEST_MAIN_LIBRARIES})
 
 # No heap allocation in a step: the core compiled again with EIGEN_RUNTIME_NO_MALLOC, for this test only.
-file(GLOB CABLE_CORE_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/cable_dynamics/src/*.cpp)
-list(FILTER CABLE_CORE_SOURCES EXCLUDE REGEX "(_app|model_report|cli_options|csv_output|cable_urdf)\\.cpp$")
 add_library(cable_dynamics_core_nomalloc STATIC ${CABLE_CORE_SOURCES})
 target_compile_definitions(cable_dynamics_core_nomalloc PUBLIC EIGEN_RUNTIME_NO_MALLOC)
 # Eigen checks the guard with eigen_assert: keep assertions on (no NDEBUG) in this library and test.
 target_compile_options(cable_dynamics_core_nomalloc PUBLIC -UNDEBUG)
-target_include_directories(cable_dynamics_core_nomalloc PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/cable_dynamics/include ${EIGEN3_INCLUDE_DIR})
+target_include_directories(cable_dynamics_core_nomalloc PUBLIC ${CABLE_CORE_INCLUDE_DIR} ${EIGEN3_INCLUDE_DIR})
 target_link_libraries(cable_dynamics_core_nomalloc PUBLIC yaml-cpp)
 catkin_add_gtest(test_no_allocation test/test_no_allocation.cpp)
 target_link_libraries(test_no_allocation cable_dynamics_core_nomalloc ${GTEST_MAIN_LIBRARIES})

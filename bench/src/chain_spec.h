@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 #include <Eigen/StdVector>
 
-#include "cable_dynamics/cable_params.h"
+#include "cable_dynamics/params/cable_params.h"
 
 namespace bench {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "cable_dynamics/cable_simulator.h"
-#include "cable_dynamics/config_loader.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+#include "cable_dynamics/params/config_loader.h"
 
 namespace {
 

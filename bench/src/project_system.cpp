@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "cable_dynamics/config_loader.h"
+#include "cable_dynamics/params/config_loader.h"
 
 namespace bench {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cable_dynamics/cable_simulator.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
 #include "chain_spec.h"
 
 namespace bench {

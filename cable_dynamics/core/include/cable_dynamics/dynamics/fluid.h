@@ -1,0 +1,127 @@
+#pragma once
+/// \file
+/// \brief The water around the cable: current (uniform or a depth profile) and Morison drag.
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Core>
+
+#include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/dynamics/link_block.h"
+
+namespace cable_dynamics {
+
+/// Current velocity as a function of depth, in the paper frame (z down) [m/s].
+class CurrentField {
+ public:
+  explicit CurrentField(const FluidParams& fluid);
+
+  /// Current at paper-frame depth z below the base [m]: linear in the profile, constant beyond it.
+  Eigen::Vector3d at(double z) const;
+
+  /// Replaces the field by a uniform current given in the world frame [m/s] (e.g. from a topic).
+  void setUniformWorld(const Eigen::Vector3d& current_world);
+
+  /// true when the current is the same at every depth (no profile).
+  bool uniform() const { return depth_.size() == 0; }
+
+  /// The current when uniform() [m/s].
+  const Eigen::Vector3d& uniformValue() const { return uniform_; }
+
+ private:
+  Eigen::Vector3d uniform_;                   ///< paper frame [m/s]
+  Eigen::VectorXd depth_;                     ///< (rows) [m]
+  Eigen::Matrix3Xd profile_;                  ///< (3 x rows) paper frame [m/s]
+};
+
+/// Morison drag per unit length on a cylinder of diameter d with axis u, moving at velocity `velocity`
+/// through water moving at `current` (both [m/s]): normal part 1/2 rho C_n d |v_n| v_n on the projected
+/// diameter, tangential part 1/2 rho C_t (pi d) |v_t| v_t on the wetted perimeter, v = current - velocity.
+/// Returns [N/m].
+Eigen::Vector3d morisonDragPerLength(const Eigen::Vector3d& axis, const Eigen::Vector3d& velocity,
+                                     const Eigen::Vector3d& current, double density, double diameter,
+                                     double drag_normal, double drag_tangential);
+
+/// Power of the normal added-mass force on a link [W] as base_weight.a + axis_weight.u'' for its base-end
+/// acceleration a and axis acceleration u'': the force per length -m_a' P x'' (P = I - u u^T) against
+/// the velocity x' = v + s u', integrated over the length l. With x'' = a + s u'' and P x' = P v + s u'
+/// (u' is normal to u) it is -m_a' [l a.Pv + l^2/2 (a.u' + u''.Pv) + l^3/3 u''.u'].
+/// added_per_length m_a' [kg/m], l [m], unit axis u, axis_rate u' [1/s], velocity v [m/s].
+inline void addedMassPowerWeights(double added_per_length, double l, const Vec3& u, const Vec3& axis_rate,
+                                  const Vec3& velocity, Vec3& base_weight, Vec3& axis_weight) {
+  const Vec3 normal_velocity = velocity - dot(u, velocity) * u;
+  base_weight = -added_per_length * (l * normal_velocity + (0.5 * l * l) * axis_rate);
+  axis_weight = -added_per_length * ((0.5 * l * l) * normal_velocity + (l * l * l / 3.0) * axis_rate);
+}
+
+/// Gauss-Legendre nodes on [0, 1] and their weights (sum 1), for 1 to 8 points.
+void gaussLegendreUnit(int points, double* nodes, double* weights);
+
+/// Morison drag integrated along straight links by Gauss-Legendre quadrature (fluid.drag_points points).
+class LinkDrag {
+ public:
+  LinkDrag(const FluidParams& fluid, double diameter);
+
+  /// Adds the drag in a current that is the same at every depth [m/s] to the eight links of `block`
+  /// (its length, base_vel, u and axis_rate): the force [N] to `force`, its first moment about the base
+  /// end, the integral of s f(s) ds [N m], to `moment` (the torque about the base end is u x moment), and
+  /// sets `drag_power` [W]. With one current c the relative water velocity is c - v - s u', and u' is
+  /// normal to u: its tangential part (c - v).u is the same at every s, and its normal part is n0 - s u'
+  /// with |n0 - s u'|^2 quadratic in s. So the quadrature needs one square root per point, and the
+  /// force and moment are n0 and u' weighted by sums of w |n(s)|, w s |n(s)| and w s^2 |n(s)|. Each
+  /// loop runs over the block's lanes and compiles to vector instructions. Inline: it runs for every
+  /// link in every evaluation.
+  EIGEN_ALWAYS_INLINE void addUniform(const Vec3& current, LinkBlock& block) const {
+    double c0[kBlockLanes], c1[kBlockLanes], c2[kBlockLanes], along[kBlockLanes];
+    Lanes3 normal;
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const Vec3 relative = current - block.base_vel[i], axis = block.u[i], axis_rate = block.axis_rate[i];
+      along[i] = dot(relative, axis);
+      const Vec3 n0 = relative - along[i] * axis;
+      normal.set(i, n0);
+      c0[i] = dot(n0, n0);
+      c1[i] = -2.0 * dot(n0, axis_rate);
+      c2[i] = dot(axis_rate, axis_rate);
+    }
+    double sum0[kBlockLanes] = {}, sum1[kBlockLanes] = {}, sum2[kBlockLanes] = {};
+    for (int p = 0; p < points_; ++p) {
+      const double node = nodes_[p], weight = weights_[p];
+      for (int i = 0; i < kBlockLanes; ++i) {
+        const double l = block.length[i], s = node * l, w = weight * l;
+        const double speed_squared = c0[i] + s * (c1[i] + s * c2[i]);  // |n(s)|^2; round-off can dip below 0
+        const double speed = std::sqrt(std::max(speed_squared, 0.0));
+        sum0[i] += w * speed;
+        sum1[i] += (w * s) * speed;
+        sum2[i] += (w * s * s) * speed;
+      }
+    }
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const double l = block.length[i];
+      const Vec3 axis = block.u[i], axis_rate = block.axis_rate[i], n0 = normal[i];
+      const double tangential = tangential_coefficient_ * std::abs(along[i]) * along[i] * l;  // [N]
+      const Vec3 force = normal_coefficient_ * (sum0[i] * n0 - sum1[i] * axis_rate) + tangential * axis;
+      const Vec3 moment = normal_coefficient_ * (sum1[i] * n0 - sum2[i] * axis_rate) + (0.5 * l * tangential) * axis;
+      block.force.set(i, block.force[i] + force);
+      block.moment.set(i, block.moment[i] + moment);
+      block.drag_power[i] = dot(force, block.base_vel[i]) + dot(moment, axis_rate);
+    }
+  }
+
+  /// Drag on a link of length l [m] with base end at `base` [m] moving at `velocity` [m/s], unit axis u
+  /// turning at u' = `axis_rate` [1/s], by the same quadrature evaluated point by point with the current
+  /// at each point's depth: the total force [N] and its first moment about the base end [N m]. What
+  /// a depth profile needs, and the reference the tests hold addUniform() against.
+  void pointwise(const CurrentField& current, double l, const Eigen::Vector3d& base, const Eigen::Vector3d& velocity,
+                 const Eigen::Vector3d& axis, const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
+                 Eigen::Vector3d& moment) const;
+
+ private:
+  double density_, diameter_, drag_normal_, drag_tangential_;
+  double normal_coefficient_;      ///< 1/2 rho C_n d [kg/m^3 m], times |v_n| v_n per length
+  double tangential_coefficient_;  ///< 1/2 rho C_t pi d [kg/m^3 m], times |v_t| v_t per length
+  int points_;
+  double nodes_[8], weights_[8];
+};
+
+}  // namespace cable_dynamics

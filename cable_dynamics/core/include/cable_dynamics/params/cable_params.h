@@ -1,0 +1,151 @@
+#pragma once
+/// \file
+/// \brief Immutable, validated parameters of the cable model (SI units) and the per-link quantities
+///        derived from them. ROS-free: Eigen and std only.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/StdVector>
+
+namespace cable_dynamics {
+
+/// How the joint springs are written.
+enum class StiffnessModel {
+  kPaper,    ///< the paper's K = diag(K_e, K_a, K_t) acting on the generalized coordinates directly
+  kBending,  ///< energy from the relative bend angle and parallel-transport twist between neighbours
+};
+
+/// How the terminal load is held (used by the simulator).
+enum class LoadMode {
+  kFree,      ///< the load hangs at the tip, moved only by the cable and the fluid
+  kAnchored,  ///< the load is held at a fixed point (seabed) by PD constraint forces
+  kAttached,  ///< the load follows an external pose (the ROV) through a stiff PD coupling
+};
+
+/// Spring constants per direction for every joint [N m/rad], or rigidities from which they are derived.
+struct StiffnessParams {
+  StiffnessModel model = StiffnessModel::kPaper;
+  double elevation = 0.0;  ///< [N m/rad]
+  double azimuth = 0.0;    ///< [N m/rad]
+  double torsion = 0.0;    ///< [N m/rad]
+  /// Bending rigidity EI [N m^2]; when > 0, elevation = azimuth = EI / l_k for joint k.
+  double bending_rigidity = 0.0;
+  /// Torsional rigidity GJ [N m^2]; when > 0, torsion = GJ / l_k for joint k.
+  double torsional_rigidity = 0.0;
+};
+
+/// Viscous joint damping per direction [N m s/rad].
+struct DampingParams {
+  double elevation = 0.0;
+  double azimuth = 0.0;
+  double torsion = 0.0;
+};
+
+/// A prescribed motion: offset + amplitude sin(2 pi t / period) + velocity t, world frame (z up).
+struct MotionParams {
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();     ///< [m]
+  Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  ///< [m]
+  double period = 10.0;                                 ///< [s]
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();   ///< [m/s]
+};
+
+/// The terminal load (ROV, clump weight or nothing).
+struct LoadParams {
+  double mass = 0.0;    ///< [kg], 0 = bare cable
+  double volume = 0.0;  ///< displaced volume [m^3], gives buoyancy
+  LoadMode mode = LoadMode::kFree;
+  double drag_area = 0.0;            ///< frontal area times drag coefficient, C_d A [m^2]
+  double added_mass = 0.0;           ///< added mass of the load [kg]
+  double coupling_stiffness = 2.0e4; ///< PD coupling to the anchor / ROV [N/m]
+  double coupling_damping = 2.0e3;   ///< [N s/m]
+  /// Anchor / ROV target relative to the load's initial position (modes anchored, attached).
+  MotionParams motion;
+};
+
+/// The cable's base (vessel, cage or fixed point).
+struct BaseParams {
+  MotionParams motion;  ///< prescribed motion of the base relative to its initial position
+};
+
+/// The surrounding fluid.
+struct FluidParams {
+  double density = 1025.0;          ///< [kg/m^3]; 0 = in air
+  double drag_normal = 1.2;         ///< Morison drag coefficient normal to a link [-]
+  double drag_tangential = 0.01;    ///< skin-friction drag coefficient along a link [-]
+  double added_mass = 1.0;          ///< added-mass coefficient normal to a link [-]
+  Eigen::Vector3d current = Eigen::Vector3d::Zero();  ///< uniform current, world frame (z up) [m/s]
+  /// Optional depth profile: rows (depth below the base [m], current x, y, z world frame [m/s]), depth
+  /// increasing; linear in between, constant beyond the ends. Replaces `current` when given.
+  std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>> current_profile;
+  int drag_points = 3;  ///< Gauss-Legendre points per link for the distributed drag
+};
+
+/// Initial state in the paper's coordinates, one value per joint [rad].
+struct InitialState {
+  std::vector<double> elevation;
+  std::vector<double> azimuth;
+  std::vector<double> torsion;
+};
+
+/// Time stepping.
+struct SimulationParams {
+  double dt = 0.001;               ///< [s]
+  std::string integrator = "rk4";  ///< rk4 | semi_implicit
+  /// recursive: O(n) articulated-body recursion; paper: the dense 3n x 3n mass matrix generated element
+  /// by element as in the paper, solved by Cholesky (O(n^3)). Same physics.
+  std::string formulation = "recursive";
+  double duration = 10.0;          ///< default length of an offline run (cable_sim without --duration) [s]
+};
+
+/// Every parameter of one cable, validated by the config loader; SI units.
+struct CableParams {
+  int links = 1;                          ///< n, number of rigid links
+  std::vector<double> link_lengths;       ///< (n) [m]
+  double diameter = 0.025;                ///< outer diameter [m]
+  double mass_per_length = 0.6;           ///< in air [kg/m]
+  StiffnessParams stiffness;
+  DampingParams damping;
+  LoadParams load;
+  BaseParams base;
+  FluidParams fluid;
+  double gravity = 9.81;                  ///< [m/s^2]
+  InitialState initial;
+  SimulationParams simulation;
+
+  /// Total length [m].
+  double totalLength() const;
+};
+
+/// Quantities derived per link from CableParams; vectors have size n, index k-1 for link k.
+struct LinkProperties {
+  int n = 0;
+  double radius = 0.0125;              ///< outer radius of the cable [m]
+  Eigen::VectorXd length;              ///< (n) [m]
+  Eigen::VectorXd mass;                ///< (n) in air [kg]
+  Eigen::VectorXd inertia_transverse;  ///< (n) about the CoM, solid cylinder m(l^2/12 + r^2/4) [kg m^2]
+  Eigen::VectorXd inertia_polar;       ///< (n) about the link axis, solid cylinder m r^2/2 [kg m^2]
+  Eigen::VectorXd submerged_mass;      ///< (n) mass minus displaced water, pi r^2 l rho [kg]
+  Eigen::VectorXd stiffness_elevation; ///< (n) per joint [N m/rad]
+  Eigen::VectorXd stiffness_azimuth;   ///< (n) [N m/rad]
+  Eigen::VectorXd stiffness_torsion;   ///< (n) [N m/rad]
+  Eigen::VectorXd damping_elevation;   ///< (n) [N m s/rad]
+  Eigen::VectorXd damping_azimuth;     ///< (n) [N m s/rad]
+  Eigen::VectorXd damping_torsion;     ///< (n) [N m s/rad]
+  double load_mass = 0.0;              ///< [kg]
+  double load_submerged_mass = 0.0;    ///< [kg]
+  double gravity = 9.81;               ///< [m/s^2]
+  StiffnessModel stiffness_model = StiffnessModel::kPaper;
+};
+
+/// Derives the per-link quantities; `params` must already be valid (see config_loader.h).
+LinkProperties deriveLinkProperties(const CableParams& params);
+
+/// Name of generalized coordinate `index` (0-based): "joint_K_elevation|azimuth|torsion", K = index/3 + 1.
+std::string coordinateName(int index);
+
+/// Names of all 3n coordinates, in the order of q.
+std::vector<std::string> coordinateNames(int links);
+
+}  // namespace cable_dynamics

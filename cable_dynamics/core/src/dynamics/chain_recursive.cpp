@@ -1,0 +1,173 @@
+/// \file
+/// \brief The O(n) formulation: an articulated-body recursion (Featherstone) written out for a chain of
+/// axisymmetric links on spherical joints (docs/MODEL.md section 4).
+///
+/// A spherical joint passes a force and no torque, so what the outboard part of the chain shows its
+/// parent is a 3x3 effective mass M_k and a bias force f_k at joint k: the force on the outboard part is
+/// J_k = M_k a_k + f_k for a base-end acceleration a_k. A link's spin (its angular acceleration along its
+/// axis) couples to nothing, and only the two transverse components move the link, so the joint's
+/// 3x3 block reduces to a 2x2 one in a basis (e1, e2) of the plane normal to the link. Every operation
+/// is on 3-vectors, symmetric 3x3 matrices and 2x2 matrices, with no heap allocation.
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "cable_dynamics/dynamics/chain_dynamics.h"
+#include "cable_dynamics/dynamics/hot_path.h"
+
+namespace cable_dynamics {
+namespace {
+
+/// Unit vectors e1, e2 with (e1, e2, u) right-handed, for a unit u, without a branch on the
+/// direction of u (Duff et al., "Building an orthonormal basis, revisited", JCGT 2017).
+inline void normalPlaneBasis(const Vec3& u, Vec3& e1, Vec3& e2) {
+  const double sign = std::copysign(1.0, u.z);
+  const double a = -1.0 / (sign + u.z);
+  const double b = u.x * u.y * a;
+  e1 = {1.0 + sign * u.x * u.x * a, sign * b, -sign * u.x};
+  e2 = {b, sign + u.y * u.y * a, -u.y};
+}
+
+}  // namespace
+
+CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
+  const int n = n_;
+  // The base-end accelerations split as a_k = a0_k + d_k: a0_k, the known part (kinematics: the sum
+  // of l_j beta_j inboard of k, the base's own acceleration included) and d_k from the angular
+  // accelerations, with d_0 = 0 and d_{k+1} = d_k + l_k C_k y_k. The recursion carries the force on the
+  // outboard part as J_k = M_k d_k + F_k (F_k = M_k a0_k + f_k): the known accelerations then enter
+  // each link's own bias terms only, which the first loop forms on vectors, and not the serial pass.
+  //
+  // What each link contributes on its own: its plane basis, inertia and bias (velocity terms: the
+  // centripetal beta = u'' at zero angular acceleration and the gyroscopic torque; the known
+  // acceleration; minus the external forces). Every link alike: the loop runs over a block's lanes.
+  for (int b = 0; b < links_.blocks(); ++b) {
+    LinkBlock& block = links_.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const Vec3 u = block.u[i], beta = block.beta[i], omega = block.omega[i], torque = block.torque[i];
+      const Vec3 axis_rate = block.axis_rate[i], known = block.known_acc[i];
+      const double l = block.length[i], across = block.across[i], added = block.added[i];
+      Vec3 e1, e2;
+      normalPlaneBasis(u, e1, e2);
+      block.e1.set(i, e1);
+      block.e2.set(i, e2);
+      // l A = l m' I + l m_a' (I - u u^T).
+      const double lm = l * across, la = l * added;
+      block.own_mass.set(i, {lm - la * u.x * u.x, -la * u.x * u.y, -la * u.x * u.z, lm - la * u.y * u.y,
+                             -la * u.y * u.z, lm - la * u.z * u.z});
+      // The link's points at s accelerate by a0 + s beta at y = 0: the force integral A (l a0 + l^2/2 beta),
+      // its first moment A (l^2/2 a0 + l^3/3 beta), of which only u x (...) counts, where A acts as m' + m_a'.
+      const Vec3 mean = l * known + (0.5 * l * l) * beta;
+      block.own_force.set(i, across * mean - (added * dot(u, mean)) * u - block.force[i]);
+      block.own_moment.set(i, across * ((0.5 * l * l) * known) + block.third_moment[i] * beta - block.moment[i]);
+      // omega x (I_rot omega) - tau, with I_rot = I_thick (I - u u^T) + I_P u u^T.
+      const double gyroscopic = block.polar[i] - block.thick_transverse[i];
+      const Vec3 q = (gyroscopic * dot(u, omega)) * axis_rate - torque;
+      block.q1[i] = dot(e1, q);
+      block.q2[i] = dot(e2, q);
+      // Spin: I_P (omega'.u) = tau.u, since a spherical joint passes no torque along the link.
+      block.spin_acc[i] = block.inverse_polar[i] * dot(u, torque);
+    }
+  }
+  // Backward: from the load inwards, fold everything outboard of joint k into (M_k, F_k).
+  // The load is a point mass at the tip: J_n = m_L a_n - F_L = m_L d_n + (m_L a0_n - F_L).
+  Symmetric3 child = Symmetric3::scaledIdentity(load_inertia_);
+  Vec3 child_force = toVec3(load_inertia_ * tip_known_acc_ - load_external_);
+  for (int k = n - 1; k >= 0; --k) {
+    LinkBlock& block = links_.of(k);
+    const int i = LinkBlocks::lane(k);
+    const double l = block.length[i];
+    const Vec3 e1 = block.e1[i], e2 = block.e2[i];
+    // Transverse inertia about joint k in the plane: S = c1 I + l^2 C^T M C with C = [u]x^T [e1 e2]
+    // = [-e2, e1]; c1 is the link's own (translation integral plus thickness).
+    const Vec3 m_e1 = child * e1, m_e2 = child * e2;
+    const double l2 = l * l, c1 = block.own_transverse[i];
+    const double s_a = c1 + l2 * dot(e2, m_e2), s_b = -l2 * dot(e1, m_e2), s_d = c1 + l2 * dot(e1, m_e1);
+    // Coupling of the base-end acceleration to the transverse ones: W = E C with E = l^2/2 m' I + l M
+    // (A [u]x = (m' + m_a') [u]x for A = m' I + m_a' (I - u u^T)).
+    const double half = block.half_moment[i];
+    const Vec3 w1 = -(l * m_e2 + half * e2);
+    const Vec3 w2 = l * m_e1 + half * e1;
+    // X = W S^-1 = V / det with V = W adj(S), and M_k = l A + M_{k+1} - X W^T = l A + M_{k+1} - Z / det
+    // with Z = V W^T: everything but one multiplication can go on while the division runs, which
+    // shortens the serial chain from M_{k+1} to M_k.
+    const double inv_det = 1.0 / (s_a * s_d - s_b * s_b);
+    const Vec3 v1 = s_d * w1 - s_b * w2, v2 = s_a * w2 - s_b * w1;
+    const Symmetric3 own = block.own_mass[i];
+    const Symmetric3 sum = {own.xx + child.xx, own.xy + child.xy, own.xz + child.xz,
+                            own.yy + child.yy, own.yz + child.yz, own.zz + child.zz};
+    const Symmetric3 z = {v1.x * w1.x + v2.x * w2.x, v1.x * w1.y + v2.x * w2.y, v1.x * w1.z + v2.x * w2.z,
+                          v1.y * w1.y + v2.y * w2.y, v1.y * w1.z + v2.y * w2.z, v1.z * w1.z + v2.z * w2.z};
+    const Symmetric3 m = {sum.xx - inv_det * z.xx, sum.xy - inv_det * z.xy, sum.xz - inv_det * z.xz,
+                          sum.yy - inv_det * z.yy, sum.yz - inv_det * z.yz, sum.zz - inv_det * z.zz};
+    const Vec3 x1 = inv_det * v1, x2 = inv_det * v2;
+    // Bias force: the link's own plus F_{k+1}; torque about joint k u x h + q with h the link's own
+    // first moment plus l F_{k+1}.
+    const Vec3 h = block.own_moment[i] + l * child_force;
+    const double g1 = block.q1[i] - dot(e2, h), g2 = block.q2[i] + dot(e1, h);
+    const Vec3 force = block.own_force[i] + child_force - (g1 * x1 + g2 * x2);
+    if (all_joint_forces) {  // for J_k = M_k d_k + F_k after the forward pass (J_0 = F_0 needs neither)
+      block.mass.set(i, m);
+      block.bias.set(i, force);
+    }
+    block.x1.set(i, x1);
+    block.x2.set(i, x2);
+    block.y1[i] = -inv_det * (s_d * g1 - s_b * g2);  // y_g = -S^-1 g
+    block.y2[i] = -inv_det * (s_a * g2 - s_b * g1);
+    child = m;
+    child_force = force;
+  }
+  const Vec3 base_force = child_force;  // F_0
+  // Forward, first the one serial recursion: y = y_g - X^T d_k (the transverse angular accelerations in
+  // the (e1, e2) basis) and C y = y2 e1 - y1 e2 make d_{k+1} = T_k d_k + c_k, with
+  // T_k = I + l (e2 x1^T - e1 x2^T) and c_k = l (y_g2 e1 - y_g1 e2), formed on vectors for a block's
+  // links just before its turn. The serial pass is then three short dot products per link.
+  Vec3 d = {0.0, 0.0, 0.0};  // the base translates as prescribed: d_0 = 0
+  for (int b = 0; b < links_.blocks(); ++b) {
+    LinkBlock& block = links_.block(b);
+    Lanes3 row_x, row_y, row_z, offset;  // T_k's rows and c_k
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const double l = block.length[i];
+      const Vec3 p = l * block.e1[i], r = l * block.e2[i], x1 = block.x1[i], x2 = block.x2[i];
+      row_x.set(i, {1.0 + r.x * x1.x - p.x * x2.x, r.x * x1.y - p.x * x2.y, r.x * x1.z - p.x * x2.z});
+      row_y.set(i, {r.y * x1.x - p.y * x2.x, 1.0 + r.y * x1.y - p.y * x2.y, r.y * x1.z - p.y * x2.z});
+      row_z.set(i, {r.z * x1.x - p.z * x2.x, r.z * x1.y - p.z * x2.y, 1.0 + r.z * x1.z - p.z * x2.z});
+      offset.set(i, block.y2[i] * p - block.y1[i] * r);
+    }
+    const int count = std::min(kBlockLanes, n - b * kBlockLanes);
+    for (int i = 0; i < count; ++i) {
+      block.delta_acc.set(i, d);
+      const Vec3 c = offset[i];
+      d = {dot(row_x[i], d) + c.x, dot(row_y[i], d) + c.y, dot(row_z[i], d) + c.z};
+    }
+  }
+  // Then, on vectors again, what follows from d_k: angular accelerations and the added-mass power.
+  double power[kBlockLanes] = {};
+  for (int b = 0; b < links_.blocks(); ++b) {
+    LinkBlock& block = links_.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const Vec3 delta = block.delta_acc[i], e1 = block.e1[i], e2 = block.e2[i], u = block.u[i];
+      const double y1 = block.y1[i] - dot(block.x1[i], delta), y2 = block.y2[i] - dot(block.x2[i], delta);
+      block.omega_rate.set(i, y1 * e1 + y2 * e2 + block.spin_acc[i] * u);
+      // u'' = omega' x u + beta, with omega' x u = C y = y2 e1 - y1 e2.
+      const Vec3 axis_acc = y2 * e1 - y1 * e2 + block.beta[i];
+      Vec3 added_base, added_axis;
+      addedMassPowerWeights(block.added[i], block.length[i], u, block.axis_rate[i], block.base_vel[i], added_base,
+                            added_axis);
+      power[i] += dot(added_base, block.known_acc[i] + delta) + dot(added_axis, axis_acc);
+    }
+  }
+  added_mass_power_ = 0.0;
+  for (int i = 0; i < kBlockLanes; ++i) added_mass_power_ += power[i];
+  // J_k = M_k d_k + F_k; at the base d_0 = 0: J_0 = F_0.
+  joint_force_.col(0) = toEigen(base_force);
+  for (int k = 1; all_joint_forces && k < n; ++k) {
+    const LinkBlock& block = links_.of(k);
+    const int i = LinkBlocks::lane(k);
+    joint_force_.col(k) = toEigen(block.mass[i] * block.delta_acc[i] + block.bias[i]);
+  }
+  load_force_ = load_inertia_ * (tip_known_acc_ + toEigen(d)) - load_external_;
+}
+
+}  // namespace cable_dynamics

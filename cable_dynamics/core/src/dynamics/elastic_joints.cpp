@@ -1,0 +1,148 @@
+#include "cable_dynamics/dynamics/elastic_joints.h"
+
+#include <cmath>
+
+#include <unsupported/Eigen/AutoDiff>
+
+namespace cable_dynamics {
+namespace {
+
+// The bending-model energy of one joint is a function of four local variables,
+// x = (te_{k-1}, te_k, a_k, t_k); its gradient and Hessian come from forward-mode automatic
+// differentiation (exact to rounding, not finite differences), with fixed-size types: no heap.
+using Vec4 = Eigen::Matrix<double, 4, 1>;
+using Ad1 = Eigen::AutoDiffScalar<Vec4>;
+using Ad1Vec4 = Eigen::Matrix<Ad1, 4, 1>;
+using Ad2 = Eigen::AutoDiffScalar<Ad1Vec4>;
+
+inline double valueOf(double x) { return x; }
+inline double valueOf(const Ad1& x) { return x.value(); }
+inline double valueOf(const Ad2& x) { return x.value().value(); }
+
+/// beta^2 as a smooth function of s = |A - B|^2 = 2 - 2 cos(beta) for unit vectors A, B:
+/// beta = 2 asin(sqrt(s)/2). The series near s = 0 keeps the derivatives finite at a straight joint.
+template <typename S>
+S bendAngleSquared(const S& s) {
+  using std::asin;
+  using std::sqrt;
+  if (valueOf(s) < 1e-4) return s + s * s / 12.0 + s * s * s / 90.0;  // next term s^4/560: < 2e-19 here
+  const S beta = 2.0 * asin(sqrt(s) / 2.0);
+  return beta * beta;
+}
+
+/// Bend angle squared and twist of joint k from x = (te_prev, te, a, t). The previous link's azimuth is
+/// taken as zero: both quantities are invariant to a common rotation about the vertical.
+template <typename S>
+void bendTwist(const S& te_prev, const S& te, const S& a, const S& t, S& bend_squared, S& twist) {
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  const S ax = S(0.0), ay = sin(te_prev), az = cos(te_prev);
+  const S bx = sin(te) * sin(a), by = sin(te) * cos(a), bz = cos(te);
+  const S dx = ax - bx, dy = ay - by, dz = az - bz;
+  bend_squared = bendAngleSquared(S(dx * dx + dy * dy + dz * dz));
+  // Solid angle of the spherical triangle (down, A, B) (Van Oosterom and Strackee): the rotation that
+  // parallel transport picks up around the vertical. Euler angles make the twist psi + phi relative to
+  // the vertical; subtracting the transport holonomy leaves the twist between neighbours.
+  const S triple = ax * by - ay * bx;
+  const S denominator = 1.0 + az + bz + (ax * bx + ay * by + az * bz);
+  const S holonomy = -2.0 * atan2(triple, denominator);
+  twist = a + t - holonomy;
+}
+
+template <typename S>
+S jointEnergy(const S& te_prev, const S& te, const S& a, const S& t, double k_bend, double k_twist) {
+  S bend_squared, twist;
+  bendTwist(te_prev, te, a, t, bend_squared, twist);
+  return 0.5 * k_bend * bend_squared + 0.5 * k_twist * twist * twist;
+}
+
+/// Global indices of the local variables of joint k; -1 where the variable is the fixed base.
+inline void localIndices(int k, int idx[4]) {
+  idx[0] = k > 0 ? 3 * (k - 1) : -1;
+  idx[1] = 3 * k;
+  idx[2] = 3 * k + 1;
+  idx[3] = 3 * k + 2;
+}
+
+inline double localValue(const Eigen::VectorXd& q, int index) { return index >= 0 ? q(index) : 0.0; }
+
+}  // namespace
+
+ElasticJoints::ElasticJoints(const LinkProperties& p) : n_(p.n), model_(p.stiffness_model) {
+  k_diag_.resize(3 * n_);
+  c_diag_.resize(3 * n_);
+  for (int k = 0; k < n_; ++k) {
+    k_diag_.segment<3>(3 * k) << p.stiffness_elevation(k), p.stiffness_azimuth(k), p.stiffness_torsion(k);
+    c_diag_.segment<3>(3 * k) << p.damping_elevation(k), p.damping_azimuth(k), p.damping_torsion(k);
+  }
+}
+
+double ElasticJoints::energy(const Eigen::VectorXd& q) const {
+  if (model_ == StiffnessModel::kPaper) return 0.5 * q.dot(k_diag_.cwiseProduct(q));
+  double v = 0.0;
+  int idx[4];
+  for (int k = 0; k < n_; ++k) {
+    localIndices(k, idx);
+    v += jointEnergy(localValue(q, idx[0]), q(idx[1]), q(idx[2]), q(idx[3]), k_diag_(3 * k), k_diag_(3 * k + 2));
+  }
+  return v;
+}
+
+void ElasticJoints::force(const Eigen::VectorXd& q, Eigen::VectorXd& out) const {
+  if (model_ == StiffnessModel::kPaper) {
+    out = k_diag_.cwiseProduct(q);
+    return;
+  }
+  out.setZero();
+  int idx[4];
+  for (int k = 0; k < n_; ++k) {
+    localIndices(k, idx);
+    Ad1 x[4];
+    for (int i = 0; i < 4; ++i) x[i] = Ad1(localValue(q, idx[i]), 4, i);
+    const Ad1 v = jointEnergy(x[0], x[1], x[2], x[3], k_diag_(3 * k), k_diag_(3 * k + 2));
+    for (int i = 0; i < 4; ++i) {
+      if (idx[i] >= 0) out(idx[i]) += v.derivatives()(i);
+    }
+  }
+}
+
+void ElasticJoints::stiffness(const Eigen::VectorXd& q, Eigen::MatrixXd& out) const {
+  out.setZero();
+  if (model_ == StiffnessModel::kPaper) {
+    out.diagonal() = k_diag_;
+    return;
+  }
+  int idx[4];
+  for (int k = 0; k < n_; ++k) {
+    localIndices(k, idx);
+    Ad2 x[4];
+    for (int i = 0; i < 4; ++i) {
+      // Outer derivative seeds i; the value itself carries the inner seed i for the second derivative.
+      Ad1Vec4 outer_seed = Ad1Vec4::Constant(Ad1(0.0, Vec4::Zero()));
+      outer_seed(i) = Ad1(1.0, Vec4::Zero());
+      x[i] = Ad2(Ad1(localValue(q, idx[i]), 4, i), outer_seed);
+    }
+    const Ad2 v = jointEnergy(x[0], x[1], x[2], x[3], k_diag_(3 * k), k_diag_(3 * k + 2));
+    for (int i = 0; i < 4; ++i) {
+      for (int j = 0; j < 4; ++j) {
+        if (idx[i] >= 0 && idx[j] >= 0) out(idx[i], idx[j]) += v.derivatives()(i).derivatives()(j);
+      }
+    }
+  }
+}
+
+void ElasticJoints::damping(Eigen::MatrixXd& out) const {
+  out.setZero();
+  out.diagonal() = c_diag_;
+}
+
+void ElasticJoints::bendAndTwist(const Eigen::VectorXd& q, int k, double& bend, double& twist) const {
+  int idx[4];
+  localIndices(k, idx);
+  double bend_squared = 0.0;
+  bendTwist(localValue(q, idx[0]), q(idx[1]), q(idx[2]), q(idx[3]), bend_squared, twist);
+  bend = std::sqrt(std::max(0.0, bend_squared));
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,58 @@
+#include "cable_dynamics/params/cable_params.h"
+
+#include <cmath>
+#include <numeric>
+
+namespace cable_dynamics {
+
+double CableParams::totalLength() const {
+  return std::accumulate(link_lengths.begin(), link_lengths.end(), 0.0);
+}
+
+LinkProperties deriveLinkProperties(const CableParams& params) {
+  const int n = params.links;
+  const double radius = 0.5 * params.diameter;                  // [m]
+  const double section_area = M_PI * radius * radius;           // [m^2]
+  LinkProperties p;
+  p.n = n;
+  p.radius = radius;
+  p.length = Eigen::Map<const Eigen::VectorXd>(params.link_lengths.data(), n);
+  p.mass = params.mass_per_length * p.length;
+  // A link is a solid cylinder of the cable's outer diameter: the transverse inertia is about the CoM.
+  p.inertia_transverse = p.mass.array() * (p.length.array().square() / 12.0 + radius * radius / 4.0);
+  p.inertia_polar = p.mass * (radius * radius / 2.0);
+  p.submerged_mass = p.mass - params.fluid.density * section_area * p.length;
+
+  // Rigidities, when given, give per-joint springs k = EI / l_k (a beam of length l_k bent uniformly).
+  const StiffnessParams& k = params.stiffness;
+  const Eigen::VectorXd inv_length = p.length.cwiseInverse();
+  const auto springs = [&](double per_joint, double rigidity) -> Eigen::VectorXd {
+    return rigidity > 0.0 ? Eigen::VectorXd(rigidity * inv_length) : Eigen::VectorXd::Constant(n, per_joint);
+  };
+  p.stiffness_elevation = springs(k.elevation, k.bending_rigidity);
+  p.stiffness_azimuth = springs(k.azimuth, k.bending_rigidity);
+  p.stiffness_torsion = springs(k.torsion, k.torsional_rigidity);
+  p.damping_elevation = Eigen::VectorXd::Constant(n, params.damping.elevation);
+  p.damping_azimuth = Eigen::VectorXd::Constant(n, params.damping.azimuth);
+  p.damping_torsion = Eigen::VectorXd::Constant(n, params.damping.torsion);
+
+  p.load_mass = params.load.mass;
+  p.load_submerged_mass = params.load.mass - params.fluid.density * params.load.volume;
+  p.gravity = params.gravity;
+  p.stiffness_model = k.model;
+  return p;
+}
+
+std::string coordinateName(int index) {
+  static const char* const kDirection[3] = {"elevation", "azimuth", "torsion"};
+  return "joint_" + std::to_string(index / 3 + 1) + "_" + kDirection[index % 3];
+}
+
+std::vector<std::string> coordinateNames(int links) {
+  std::vector<std::string> names;
+  names.reserve(3 * links);
+  for (int i = 0; i < 3 * links; ++i) names.push_back(coordinateName(i));
+  return names;
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,226 @@
+#include "cable_dynamics/params/config_loader.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+namespace cable_dynamics {
+namespace {
+
+using Section = ConfigSection;
+
+constexpr int kMaxLinks = 10000;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+void parseCable(Section cable, CableParams& p) {
+  p.links = cable.integer("links", 1, 1, kMaxLinks, true);
+  if (cable.has("link_lengths")) {
+    // The list overrides `length`: the total length is then the sum of the list.
+    p.link_lengths = cable.numberList("link_lengths", p.links, 0.0, 1e5, true, "m");
+    cable.number("length", 0.0, 0.0, 1e5, true, "m");  // still validated when present
+  } else {
+    const double total = cable.number("length", 0.0, 0.0, 1e5, true, "m", true);
+    p.link_lengths.assign(p.links, total / p.links);
+  }
+  p.diameter = cable.number("diameter", 0.0, 0.0, 10.0, true, "m", true);
+  const bool has_linear_density = cable.has("mass_per_length");
+  const bool has_material_density = cable.has("material_density");
+  if (has_linear_density == has_material_density) {
+    throw ConfigError(cable.path() + ".mass_per_length", has_linear_density ? "given with material_density" : "(missing)",
+                      "exactly one of cable.mass_per_length [kg/m] or cable.material_density [kg/m^3]");
+  }
+  if (has_linear_density) {
+    p.mass_per_length = cable.number("mass_per_length", 0.0, 0.0, 1e5, true, "kg/m");
+  } else {
+    const double rho = cable.number("material_density", 0.0, 0.0, 1e5, true, "kg/m^3");
+    p.mass_per_length = rho * M_PI * 0.25 * p.diameter * p.diameter;
+  }
+
+  Section stiffness = cable.sub("stiffness");
+  const std::string model = stiffness.choice("model", "paper", {"paper", "bending"});
+  p.stiffness.model = model == "paper" ? StiffnessModel::kPaper : StiffnessModel::kBending;
+  p.stiffness.elevation = stiffness.number("elevation", 0.0, 0.0, kInf, false, "N m/rad");
+  p.stiffness.azimuth = stiffness.number("azimuth", 0.0, 0.0, kInf, false, "N m/rad");
+  p.stiffness.torsion = stiffness.number("torsion", 0.0, 0.0, kInf, false, "N m/rad");
+  p.stiffness.bending_rigidity = stiffness.number("bending_rigidity", 0.0, 0.0, kInf, false, "N m^2");
+  p.stiffness.torsional_rigidity = stiffness.number("torsional_rigidity", 0.0, 0.0, kInf, false, "N m^2");
+  if (p.stiffness.bending_rigidity > 0.0 && (p.stiffness.elevation > 0.0 || p.stiffness.azimuth > 0.0)) {
+    throw ConfigError(stiffness.path() + ".bending_rigidity", std::to_string(p.stiffness.bending_rigidity),
+                      "0 when stiffness.elevation or stiffness.azimuth is given (one or the other)");
+  }
+  if (p.stiffness.torsional_rigidity > 0.0 && p.stiffness.torsion > 0.0) {
+    throw ConfigError(stiffness.path() + ".torsional_rigidity", std::to_string(p.stiffness.torsional_rigidity),
+                      "0 when stiffness.torsion is given (one or the other)");
+  }
+  if (p.stiffness.model == StiffnessModel::kBending && p.stiffness.azimuth != p.stiffness.elevation &&
+      p.stiffness.azimuth != 0.0) {
+    // One bending spring acts in every bending direction: a separate azimuth spring has no meaning there.
+    throw ConfigError(stiffness.path() + ".azimuth", std::to_string(p.stiffness.azimuth),
+                      "0 or equal to stiffness.elevation with model: bending (the bend spring is elevation)");
+  }
+  stiffness.rejectUnknownKeys();
+
+  Section damping = cable.sub("damping");
+  p.damping.elevation = damping.number("elevation", 0.0, 0.0, kInf, false, "N m s/rad");
+  p.damping.azimuth = damping.number("azimuth", 0.0, 0.0, kInf, false, "N m s/rad");
+  p.damping.torsion = damping.number("torsion", 0.0, 0.0, kInf, false, "N m s/rad");
+  damping.rejectUnknownKeys();
+  cable.rejectUnknownKeys();
+}
+
+Eigen::Vector3d vector3(Section& s, const std::string& key, double limit, const char* unit) {
+  if (!s.has(key)) return Eigen::Vector3d::Zero();
+  const std::vector<double> v = s.numberList(key, 3, -limit, limit, false, unit);
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+MotionParams parseMotion(Section motion) {
+  MotionParams m;
+  m.offset = vector3(motion, "offset", 1e5, "m");
+  m.amplitude = vector3(motion, "amplitude", 1e4, "m");
+  m.period = motion.number("period", 10.0, 0.0, 1e6, true, "s");
+  m.velocity = vector3(motion, "velocity", 100.0, "m/s");
+  motion.rejectUnknownKeys();
+  return m;
+}
+
+void parseLoad(Section load, CableParams& p) {
+  p.load.mass = load.number("mass", 0.0, 0.0, 1e7, false, "kg");
+  p.load.volume = load.number("volume", 0.0, 0.0, 1e4, false, "m^3");
+  const std::string mode = load.choice("mode", "free", {"free", "anchored", "attached"});
+  p.load.mode = mode == "free" ? LoadMode::kFree : mode == "anchored" ? LoadMode::kAnchored : LoadMode::kAttached;
+  p.load.drag_area = load.number("drag_area", 0.0, 0.0, 1e4, false, "m^2");
+  p.load.added_mass = load.number("added_mass", 0.0, 0.0, 1e7, false, "kg");
+  Section coupling = load.sub("coupling");
+  p.load.coupling_stiffness = coupling.number("stiffness", 2.0e4, 0.0, 1e9, true, "N/m");
+  p.load.coupling_damping = coupling.number("damping", 2.0e3, 0.0, 1e9, false, "N s/m");
+  coupling.rejectUnknownKeys();
+  p.load.motion = parseMotion(load.sub("motion"));
+  load.rejectUnknownKeys();
+}
+
+void parseFluid(Section fluid, CableParams& p) {
+  p.fluid.density = fluid.number("density", 1025.0, 0.0, 2.0e4, false, "kg/m^3");
+  p.fluid.drag_normal = fluid.number("drag_normal", 1.2, 0.0, 100.0, false, "");
+  p.fluid.drag_tangential = fluid.number("drag_tangential", 0.01, 0.0, 100.0, false, "");
+  p.fluid.added_mass = fluid.number("added_mass", 1.0, 0.0, 100.0, false, "");
+  p.fluid.current = vector3(fluid, "current", 100.0, "m/s");
+  p.fluid.drag_points = fluid.integer("drag_points", 3, 1, 8, false);
+  if (fluid.has("current_profile")) {
+    const YAML::Node rows = fluid.raw("current_profile");
+    const std::string key = fluid.path() + ".current_profile";
+    if (!rows.IsSequence() || rows.size() < 1) {
+      throw ConfigError(key, describeNode(rows), "a list of [depth m, current x, y, z m/s] rows");
+    }
+    double previous_depth = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      YAML::Node wrapper;
+      wrapper["row"] = rows[i];
+      Section row(wrapper, key + "[" + std::to_string(i) + "]");
+      const std::vector<double> v = row.numberList("row", 4, -1e5, 1e5, false, "m, m/s");
+      if (!(v[0] > previous_depth)) {
+        throw ConfigError(key + "[" + std::to_string(i) + "]", describeNode(rows[i]), "depths strictly increasing");
+      }
+      previous_depth = v[0];
+      p.fluid.current_profile.emplace_back(v[0], v[1], v[2], v[3]);
+    }
+    if (!p.fluid.current.isZero()) {
+      throw ConfigError(fluid.path() + ".current", describeNode(fluid.raw("current")),
+                        "[0, 0, 0] or absent when current_profile is given (one or the other)");
+    }
+  }
+  fluid.rejectUnknownKeys();
+}
+
+}  // namespace
+
+CableParams parseConfig(const YAML::Node& root) {
+  Section top(root, "");
+  CableParams p;
+  if (!top.has("cable")) throw ConfigError("cable", "(missing)", "a mapping with links, length, diameter, ...");
+  parseCable(top.sub("cable"), p);
+  parseLoad(top.sub("load"), p);
+  Section base = top.sub("base");
+  p.base.motion = parseMotion(base.sub("motion"));
+  base.rejectUnknownKeys();
+  parseFluid(top.sub("fluid"), p);
+  p.gravity = top.number("gravity", 9.81, 0.0, 100.0, false, "m/s^2");
+
+  Section initial = top.sub("initial");
+  p.initial.elevation = initial.perJoint("elevation", p.links, -M_PI, M_PI, "rad");
+  p.initial.azimuth = initial.perJoint("azimuth", p.links, -M_PI, M_PI, "rad");
+  p.initial.torsion = initial.perJoint("torsion", p.links, -1e3, 1e3, "rad");
+  initial.rejectUnknownKeys();
+
+  Section simulation = top.sub("simulation");
+  p.simulation.dt = simulation.number("dt", 0.001, 0.0, 0.1, true, "s");
+  p.simulation.integrator = simulation.choice("integrator", "rk4", {"rk4", "semi_implicit"});
+  p.simulation.duration = simulation.number("duration", 10.0, 0.0, 1e7, true, "s");
+  p.simulation.formulation = simulation.choice("formulation", "recursive", {"paper", "recursive"});
+  simulation.rejectUnknownKeys();
+  top.rejectUnknownKeys();
+  return p;
+}
+
+void applyOverride(YAML::Node& root, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw ConfigError(assignment, "(no '=')", "key.path=value, e.g. cable.links=10");
+  }
+  const std::string path = assignment.substr(0, eq);
+  YAML::Node value;
+  try {
+    value = YAML::Load(assignment.substr(eq + 1));
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path, assignment.substr(eq + 1), std::string("a YAML value (") + e.what() + ")");
+  }
+  std::vector<std::string> parts;
+  std::stringstream stream(path);
+  for (std::string part; std::getline(stream, part, '.');) {
+    if (part.empty()) throw ConfigError(path, assignment.substr(eq + 1), "a dotted key path without empty parts");
+    parts.push_back(part);
+  }
+  // yaml-cpp nodes are handles: walk down with fresh handles (operator= on a handle would overwrite).
+  std::vector<YAML::Node> chain{root};
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    YAML::Node next = chain.back()[parts[i]];
+    if (next.IsDefined() && !next.IsNull() && !next.IsMap()) {
+      throw ConfigError(path, assignment.substr(eq + 1), "'" + parts[i] + "' to be a mapping");
+    }
+    chain.push_back(next);
+  }
+  chain.back()[parts.back()] = value;
+}
+
+namespace {
+CableParams parseWithOverrides(YAML::Node root, const std::vector<std::string>& overrides) {
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  for (const auto& o : overrides) applyOverride(root, o);
+  return parseConfig(root);
+}
+}  // namespace
+
+CableParams loadConfigFile(const std::string& path, const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("(file)", path, std::string("a readable YAML file: ") + e.what());
+  }
+  return parseWithOverrides(root, overrides);
+}
+
+CableParams loadConfigString(const std::string& yaml_text, const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("(text)", "", std::string("valid YAML: ") + e.what());
+  }
+  return parseWithOverrides(root, overrides);
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,18 @@
+// cable_dynamics_node: simulates one umbilical; parameters from the private namespace (see README).
+#include <ros/ros.h>
+
+#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/ros/cable_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "cable_dynamics_node");
+  ros::NodeHandle nh, private_nh("~");
+  try {
+    cable_dynamics::CableNode node(nh, private_nh);
+    ros::spin();
+  } catch (const std::invalid_argument& e) {  // ConfigError too: a bad or missing parameter
+    ROS_FATAL_STREAM("cable_dynamics_node: bad parameter in " << private_nh.getNamespace() << ": " << e.what());
+    return 2;
+  }
+  return 0;
+}

@@ -1,7 +1,0 @@
-// cable_sim: simulates the cable offline (no roscore) and writes a CSV and optionally a plot.
-// Usage: cable_sim --config FILE [--set key.path=value ...] --duration S --output run.csv [--plot run.png]
-#include <iostream>
-
-#include "cable_dynamics/cable_sim_app.h"
-
-int main(int argc, char** argv) { return cable_dynamics::runCableSim(argc, argv, std::cout, std::cerr); }

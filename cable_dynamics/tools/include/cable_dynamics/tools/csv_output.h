@@ -1,0 +1,24 @@
+#pragma once
+/// \file
+/// \brief The CSV written by cable_sim: one header naming every column, one row per output time.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cable_dynamics/simulation/cable_simulator.h"
+
+namespace cable_dynamics {
+
+/// Column names: time, the 3n coordinates, their rates (`..._rate`), endK_x/y/z (paper frame, z down),
+/// tensionK, top_tension, load_force_x/y/z, base_force_x/y/z, the energies, and base_x/y/z (the base's
+/// position, which moves with base.motion or a base pose).
+std::vector<std::string> csvColumns(int links);
+
+/// Writes the header line.
+void writeCsvHeader(std::ostream& out, int links);
+
+/// Writes one row; returns false (and writes nothing) when any value is not finite.
+bool writeCsvRow(std::ostream& out, const SimulationSnapshot& s);
+
+}  // namespace cable_dynamics

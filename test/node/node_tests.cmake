@@ -1,0 +1,15 @@
+# Tests of the ROS node, included from test/tests.cmake (rostest starts its own roscore).
+
+# The node over ROS: rates, outputs, input guards, bad parameters.
+add_rostest_gtest(test_cable_node test/cable_node.test test/node/test_cable_node.cpp)
+target_include_directories(test_cable_node PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
+target_link_libraries(test_cable_node ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+add_dependencies(test_cable_node cable_msgs_generate_messages_cpp cable_dynamics_node)
+add_rostest(test/bad_config.test DEPENDENCIES cable_dynamics_node)
+add_rostest(test/sim_time.test DEPENDENCIES cable_dynamics_node)
+# rostest finds the Python test nodes of this package in the devel space through these links.
+foreach(script test_bad_config.py test_sim_time.py)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
+    ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
+endforeach()
+
