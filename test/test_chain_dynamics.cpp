@@ -71,8 +71,9 @@ void expectSameAccelerations(const CableParams& params, unsigned seed) {
   for (bool recursive : {false, true}) {
     SCOPED_TRACE(recursive ? "recursive formulation" : "dense (paper) formulation");
   const int n = params.links;
-  ChainDynamics chain(params);
-  chain.setRecursive(recursive);
+  CableParams formulated = params;
+  formulated.simulation.formulation = recursive ? Formulation::kRecursive : Formulation::kPaper;
+  ChainDynamics chain(formulated);
   Eigen::VectorXd q, qd;
   randomState(n, seed, q, qd);
   Eigen::VectorXd x;
@@ -128,9 +129,10 @@ TEST(ChainDynamics, RecursiveAndDenseFormulationsAgreeWithEveryForce) {
                                          "load={mass: 3.0, volume: 0.001, mode: attached, drag_area: 0.2, added_mass: 1.5}",
                                          "cable.stiffness={model: bending, elevation: 2.0, torsion: 0.3}",
                                          "cable.damping={elevation: 0.2, torsion: 0.05}"});
-    ChainDynamics dense(p), recursive(p);
-    dense.setRecursive(false);
-    recursive.setRecursive(true);
+    CableParams dense_params = p, recursive_params = p;
+    dense_params.simulation.formulation = Formulation::kPaper;
+    recursive_params.simulation.formulation = Formulation::kRecursive;
+    ChainDynamics dense(dense_params), recursive(recursive_params);
     EndInputs ends;
     ends.base_position = Eigen::Vector3d(0.1, -0.2, 0.05);
     ends.base_velocity = Eigen::Vector3d(0.3, 0.1, -0.2);

@@ -41,7 +41,7 @@ TEST(ConfigLoader, ShippedConfigsLoad) {
   EXPECT_EQ(p.link_lengths.size(), 25u);
   EXPECT_DOUBLE_EQ(p.diameter, 0.025);
   EXPECT_DOUBLE_EQ(p.fluid.density, 1025.0);
-  EXPECT_EQ(p.simulation.integrator, "rk4");
+  EXPECT_EQ(p.simulation.integrator, cable_dynamics::Integrator::kRk4);
 }
 
 TEST(ConfigLoader, EveryShippedPresetLoads) {
@@ -154,7 +154,7 @@ TEST(ConfigLoader, RejectsWrongTypes) {
   expectRejected("load.mode=floating", "load.mode");
   expectRejected("cable.stiffness.model=spring", "cable.stiffness.model");
   expectRejected("simulation.integrator=euler", "simulation.integrator");
-  EXPECT_EQ(loadConfigString(kMinimal, {"simulation.integrator=semi_implicit"}).simulation.integrator, "semi_implicit");
+  EXPECT_EQ(loadConfigString(kMinimal, {"simulation.integrator=semi_implicit"}).simulation.integrator, cable_dynamics::Integrator::kSemiImplicit);
   expectRejected("simulation.dt=0", "simulation.dt");
   expectRejected("initial.azimuth=[0.1, 0.2]", "initial.azimuth");
   expectRejected("cable.stiffness=3", "cable.stiffness");

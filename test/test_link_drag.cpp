@@ -47,15 +47,16 @@ struct BlockDrag {
 };
 BlockDrag uniformDrag(const cd::LinkDrag& drag, const Eigen::Vector3d& current, const LinkMotion* motions,
                       const double* lengths) {
+  cd::LinkConstants constants{};
   cd::LinkBlock block{};
   for (int i = 0; i < cd::kBlockLanes; ++i) {
-    block.length[i] = lengths[i];
+    constants.length[i] = lengths[i];
     block.u.set(i, cd::toVec3(motions[i].axis));
     block.base_vel.set(i, cd::toVec3(motions[i].velocity));
     block.axis_rate.set(i, cd::toVec3(motions[i].axis_rate));
     block.base_pos.set(i, cd::toVec3(motions[i].base));
   }
-  drag.addUniform(cd::toVec3(current), block);
+  drag.addUniform(cd::toVec3(current), constants, block);
   BlockDrag out;
   for (int i = 0; i < cd::kBlockLanes; ++i) {
     out.force[i] = cd::toEigen(block.force[i]);

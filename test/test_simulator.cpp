@@ -259,7 +259,7 @@ TEST(Simulator, SemiImplicitStaysStableWhereRk4Diverges) {
   CableSimulator explicit_sim(rk4);
   EXPECT_FALSE(explicit_sim.step().ok);
   CableParams semi = rk4;
-  semi.simulation.integrator = "semi_implicit";
+  semi.simulation.integrator = Integrator::kSemiImplicit;
   CableSimulator sim(semi);
   SimulationSnapshot start, end;
   sim.snapshot(start);
@@ -278,7 +278,7 @@ TEST(Simulator, SemiImplicitReachesTheSameSteadyState) {
                                           "cable.damping={elevation: 0.5, torsion: 0.01}"};
   CableParams rk4 = chainInAir(5, 10.0, 0.03, setup);
   CableParams semi = rk4;
-  semi.simulation.integrator = "semi_implicit";
+  semi.simulation.integrator = Integrator::kSemiImplicit;
   semi.simulation.dt = 0.01;
   CableSimulator a(rk4), b(semi);
   for (int i = 0; i < 30000; ++i) ASSERT_TRUE(a.step().ok);

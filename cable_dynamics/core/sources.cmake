@@ -9,14 +9,29 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/params/config_section.cpp
   ${CABLE_CORE_DIR}/src/params/config_loader.cpp
   ${CABLE_CORE_DIR}/src/params/states.cpp
-  # dynamics: the paper's model, the joint springs, the fluid, the chain's equations of motion
+  # dynamics: the paper's model, the joint springs, the fluid, the chain's equations of motion (the
+  # model/data split, then one file per pass, then the facade that runs them in order)
   ${CABLE_CORE_DIR}/src/dynamics/azimuth_tracker.cpp
   ${CABLE_CORE_DIR}/src/dynamics/paper_model.cpp
   ${CABLE_CORE_DIR}/src/dynamics/elastic_joints.cpp
   ${CABLE_CORE_DIR}/src/dynamics/fluid.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/chain_model.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/chain_data.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/paper_coordinates.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/kinematics.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/external_loads.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/joint_torques.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/energies.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/articulated_body.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/dense_solver.cpp
   ${CABLE_CORE_DIR}/src/dynamics/chain_dynamics.cpp
-  ${CABLE_CORE_DIR}/src/dynamics/chain_recursive.cpp
-  # simulation: time stepping, end conditions, link frames
+  # simulation: time schemes, end conditions, the step check, the simulator, link frames
+  ${CABLE_CORE_DIR}/src/simulation/time_schemes/time_scheme.cpp
+  ${CABLE_CORE_DIR}/src/simulation/time_schemes/rk4.cpp
+  ${CABLE_CORE_DIR}/src/simulation/time_schemes/semi_implicit.cpp
+  ${CABLE_CORE_DIR}/src/simulation/end_conditions.cpp
+  ${CABLE_CORE_DIR}/src/simulation/step_check.cpp
+  ${CABLE_CORE_DIR}/src/simulation/stable_step.cpp
   ${CABLE_CORE_DIR}/src/simulation/cable_simulator.cpp
   ${CABLE_CORE_DIR}/src/simulation/link_frames.cpp
 )

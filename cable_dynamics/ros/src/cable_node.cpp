@@ -69,7 +69,7 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                   << params_.diameter << " m, " << params_.mass_per_length << " kg/m, load " << params_.load.mass
                   << " kg (" << (params_.load.mode == LoadMode::kFree ? "free" : params_.load.mode == LoadMode::kAnchored ? "anchored" : "attached")
                   << "), fluid density " << params_.fluid.density << " kg/m^3, integrator "
-                  << params_.simulation.integrator << ", dt " << params_.simulation.dt << " s, rate " << options_.rate
+                  << integratorName(params_.simulation.integrator) << ", dt " << params_.simulation.dt << " s, rate " << options_.rate
                   << " Hz, world frame '" << options_.world_frame << "', frame prefix '" << options_.frame_prefix
                   << "', input timeout " << options_.input_timeout << " s; estimated largest stable RK4 step "
                   << sim_->estimateStableTimeStep() << " s");

@@ -98,7 +98,7 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   }
   CableSimulator& sim = *simulator;
   const double stable = sim.estimateStableTimeStep();
-  err << "cable_sim: " << params.links << " links, " << params.simulation.integrator << ", dt = " << sim.dt()
+  err << "cable_sim: " << params.links << " links, " << integratorName(params.simulation.integrator) << ", dt = " << sim.dt()
       << " s, estimated largest stable RK4 step "
       << stable << " s" << (sim.dt() > stable ? "  (dt is larger: expect substeps or divergence)" : "") << "\n";
 

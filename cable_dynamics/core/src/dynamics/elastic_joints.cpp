@@ -4,6 +4,8 @@
 
 #include <unsupported/Eigen/AutoDiff>
 
+#include "cable_dynamics/dynamics/joint_geometry.h"
+
 namespace cable_dynamics {
 namespace {
 
@@ -19,35 +21,21 @@ inline double valueOf(double x) { return x; }
 inline double valueOf(const Ad1& x) { return x.value(); }
 inline double valueOf(const Ad2& x) { return x.value().value(); }
 
-/// beta^2 as a smooth function of s = |A - B|^2 = 2 - 2 cos(beta) for unit vectors A, B:
-/// beta = 2 asin(sqrt(s)/2). The series near s = 0 keeps the derivatives finite at a straight joint.
-template <typename S>
-S bendAngleSquared(const S& s) {
-  using std::asin;
-  using std::sqrt;
-  if (valueOf(s) < 1e-4) return s + s * s / 12.0 + s * s * s / 90.0;  // next term s^4/560: < 2e-19 here
-  const S beta = 2.0 * asin(sqrt(s) / 2.0);
-  return beta * beta;
-}
-
-/// Bend angle squared and twist of joint k from x = (te_prev, te, a, t). The previous link's azimuth is
-/// taken as zero: both quantities are invariant to a common rotation about the vertical.
+/// Bend angle squared and twist of joint k from x = (te_prev, te, a, t), by the geometry the dynamics
+/// use (joint_geometry.h). The previous link's azimuth is taken as zero: both quantities are invariant
+/// to a common rotation about the vertical.
 template <typename S>
 void bendTwist(const S& te_prev, const S& te, const S& a, const S& t, S& bend_squared, S& twist) {
-  using std::atan2;
   using std::cos;
   using std::sin;
   const S ax = S(0.0), ay = sin(te_prev), az = cos(te_prev);
   const S bx = sin(te) * sin(a), by = sin(te) * cos(a), bz = cos(te);
   const S dx = ax - bx, dy = ay - by, dz = az - bz;
-  bend_squared = bendAngleSquared(S(dx * dx + dy * dy + dz * dz));
-  // Solid angle of the spherical triangle (down, A, B) (Van Oosterom and Strackee): the rotation that
-  // parallel transport picks up around the vertical. Euler angles make the twist psi + phi relative to
-  // the vertical; subtracting the transport holonomy leaves the twist between neighbours.
-  const S triple = ax * by - ay * bx;
-  const S denominator = 1.0 + az + bz + (ax * bx + ay * by + az * bz);
-  const S holonomy = -2.0 * atan2(triple, denominator);
-  twist = a + t - holonomy;
+  const S chord_squared = dx * dx + dy * dy + dz * dz;
+  bend_squared = bendAngleSquared(chord_squared, valueOf(chord_squared));
+  // Euler angles make the twist psi + phi relative to the vertical; subtracting the transport holonomy
+  // leaves the twist between neighbours (sigma_k - sigma_{k-1} = a_k + t_k).
+  twist = a + t - transportHolonomy(ax, ay, az, bx, by, bz);
 }
 
 template <typename S>

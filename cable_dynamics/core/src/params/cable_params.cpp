@@ -22,6 +22,7 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
   p.inertia_transverse = p.mass.array() * (p.length.array().square() / 12.0 + radius * radius / 4.0);
   p.inertia_polar = p.mass * (radius * radius / 2.0);
   p.submerged_mass = p.mass - params.fluid.density * section_area * p.length;
+  p.added_mass_per_length = params.fluid.added_mass * params.fluid.density * section_area;
 
   // Rigidities, when given, give per-joint springs k = EI / l_k (a beam of length l_k bent uniformly).
   const StiffnessParams& k = params.stiffness;
@@ -41,6 +42,14 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
   p.gravity = params.gravity;
   p.stiffness_model = k.model;
   return p;
+}
+
+const char* integratorName(Integrator integrator) {
+  return integrator == Integrator::kRk4 ? "rk4" : "semi_implicit";
+}
+
+const char* formulationName(Formulation formulation) {
+  return formulation == Formulation::kRecursive ? "recursive" : "paper";
 }
 
 std::string coordinateName(int index) {

@@ -157,9 +157,13 @@ CableParams parseConfig(const YAML::Node& root) {
 
   Section simulation = top.sub("simulation");
   p.simulation.dt = simulation.number("dt", 0.001, 0.0, 0.1, true, "s");
-  p.simulation.integrator = simulation.choice("integrator", "rk4", {"rk4", "semi_implicit"});
+  p.simulation.integrator = simulation.choice("integrator", "rk4", {"rk4", "semi_implicit"}) == "rk4"
+                                ? Integrator::kRk4
+                                : Integrator::kSemiImplicit;
   p.simulation.duration = simulation.number("duration", 10.0, 0.0, 1e7, true, "s");
-  p.simulation.formulation = simulation.choice("formulation", "recursive", {"paper", "recursive"});
+  p.simulation.formulation = simulation.choice("formulation", "recursive", {"paper", "recursive"}) == "recursive"
+                                 ? Formulation::kRecursive
+                                 : Formulation::kPaper;
   simulation.rejectUnknownKeys();
   top.rejectUnknownKeys();
   return p;

@@ -23,8 +23,6 @@ class ElasticJoints {
  public:
   explicit ElasticJoints(const LinkProperties& properties);
 
-  StiffnessModel model() const { return model_; }
-
   /// Elastic energy [J] at q [rad].
   double energy(const Eigen::VectorXd& q) const;
 

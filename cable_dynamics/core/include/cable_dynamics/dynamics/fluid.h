@@ -63,8 +63,10 @@ class LinkDrag {
  public:
   LinkDrag(const FluidParams& fluid, double diameter);
 
+  int points() const { return points_; }
+
   /// Adds the drag in a current that is the same at every depth [m/s] to the eight links of `block`
-  /// (its length, base_vel, u and axis_rate): the force [N] to `force`, its first moment about the base
+  /// (their lengths from `constants`; base_vel, u and axis_rate from `block`): the force [N] to `force`, its first moment about the base
   /// end, the integral of s f(s) ds [N m], to `moment` (the torque about the base end is u x moment), and
   /// sets `drag_power` [W]. With one current c the relative water velocity is c - v - s u', and u' is
   /// normal to u: its tangential part (c - v).u is the same at every s, and its normal part is n0 - s u'
@@ -72,7 +74,7 @@ class LinkDrag {
   /// force and moment are n0 and u' weighted by sums of w |n(s)|, w s |n(s)| and w s^2 |n(s)|. Each
   /// loop runs over the block's lanes and compiles to vector instructions. Inline: it runs for every
   /// link in every evaluation.
-  EIGEN_ALWAYS_INLINE void addUniform(const Vec3& current, LinkBlock& block) const {
+  EIGEN_ALWAYS_INLINE void addUniform(const Vec3& current, const LinkConstants& constants, LinkBlock& block) const {
     double c0[kBlockLanes], c1[kBlockLanes], c2[kBlockLanes], along[kBlockLanes];
     Lanes3 normal;
     for (int i = 0; i < kBlockLanes; ++i) {
@@ -88,7 +90,7 @@ class LinkDrag {
     for (int p = 0; p < points_; ++p) {
       const double node = nodes_[p], weight = weights_[p];
       for (int i = 0; i < kBlockLanes; ++i) {
-        const double l = block.length[i], s = node * l, w = weight * l;
+        const double l = constants.length[i], s = node * l, w = weight * l;
         const double speed_squared = c0[i] + s * (c1[i] + s * c2[i]);  // |n(s)|^2; round-off can dip below 0
         const double speed = std::sqrt(std::max(speed_squared, 0.0));
         sum0[i] += w * speed;
@@ -97,7 +99,7 @@ class LinkDrag {
       }
     }
     for (int i = 0; i < kBlockLanes; ++i) {
-      const double l = block.length[i];
+      const double l = constants.length[i];
       const Vec3 axis = block.u[i], axis_rate = block.axis_rate[i], n0 = normal[i];
       const double tangential = tangential_coefficient_ * std::abs(along[i]) * along[i] * l;  // [N]
       const Vec3 force = normal_coefficient_ * (sum0[i] * n0 - sum1[i] * axis_rate) + tangential * axis;

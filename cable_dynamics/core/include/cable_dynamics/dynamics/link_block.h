@@ -67,10 +67,9 @@ struct LanesSymmetric3 {
   }
 };
 
-/// Eight links' constants, state-derived quantities and the recursion's intermediate results (SI units;
-/// what each means: chain_dynamics.h and docs/MODEL.md section 4).
-struct alignas(64) LinkBlock {
-  // Constants, set once.
+/// Eight links' constants (SI units), set once by ChainModel and read by every pass. Lanes past the
+/// last link: zero length and mass (inverse_polar 0), so they stay finite and add nothing.
+struct alignas(64) LinkConstants {
   double length[kBlockLanes];           ///< l [m]
   double mass_per_length[kBlockLanes];  ///< m' [kg/m]
   double added[kBlockLanes];            ///< m_a', normal added mass per length [kg/m]
@@ -82,7 +81,12 @@ struct alignas(64) LinkBlock {
   double thick_transverse[kBlockLanes]; ///< thickness part of the transverse inertia, m r^2/4 [kg m^2]
   double polar[kBlockLanes];            ///< I_P [kg m^2]
   double inverse_polar[kBlockLanes];    ///< 1/I_P, 0 in the padding lanes [1/(kg m^2)]
-  // Kinematics (ChainDynamics::kinematics).
+};
+
+/// Eight links' state-derived quantities and the recursion's intermediate results, rewritten by every
+/// evaluation (SI units; what each means: docs/MODEL.md section 4). Part of ChainData.
+struct alignas(64) LinkBlock {
+  // Kinematics (kinematics.cpp).
   Lanes3 u;            ///< unit axis
   Lanes3 omega;        ///< angular velocity [rad/s]
   Lanes3 axis_rate;    ///< u' = omega x u [1/s]
@@ -91,12 +95,12 @@ struct alignas(64) LinkBlock {
   Lanes3 base_vel;     ///< [m/s]
   Lanes3 known_acc;    ///< a0: base-end acceleration at zero angular accelerations [m/s^2]
   double twist_rate[kBlockLanes];  ///< sigma' [rad/s]
-  // External loads (ChainDynamics::externalForces, computeJointTorques).
+  // External loads (external_loads.cpp, joint_torques.cpp).
   Lanes3 force;        ///< total external force on the link [N]
   Lanes3 moment;       ///< its first moment about the base end [N m]
   Lanes3 torque;       ///< joint springs and dampers on the link [N m]
   double drag_power[kBlockLanes];  ///< power of the drag on the link [W]
-  // The recursion, each link on its own (chain_recursive.cpp).
+  // The recursion, each link on its own (articulated_body.cpp, linkTermsPass).
   Lanes3 e1, e2;              ///< basis of the plane normal to u, e1 x e2 = u
   LanesSymmetric3 own_mass;   ///< l A, the link's translational inertia [kg]
   Lanes3 own_force;           ///< A (l a0 + l^2/2 beta) - F [N]
@@ -114,7 +118,7 @@ struct alignas(64) LinkBlock {
   Lanes3 omega_rate;          ///< angular acceleration [rad/s^2]
 };
 
-/// The blocks of a chain of n links, with per-link access for the code that goes link by link.
+/// The variable blocks of a chain of n links, with per-link access for the code that goes link by link.
 class LinkBlocks {
  public:
   explicit LinkBlocks(int links = 0)

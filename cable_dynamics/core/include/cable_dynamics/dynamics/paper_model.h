@@ -8,6 +8,8 @@
 /// (both relative: psi_k = a_1 + ... + a_k, phi_k = t_1 + ... + t_k). Frame: base at the origin,
 /// z down. See docs/MODEL.md for the derivation.
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "cable_dynamics/params/cable_params.h"
@@ -31,6 +33,16 @@ PaperModelTerms paperModelAt(const LinkProperties& properties, const Eigen::Vect
 
 /// Unit axis of a link at elevation te and absolute azimuth psi (paper frame, z down) [-].
 Eigen::Vector3d linkAxis(double elevation, double absolute_azimuth);
+
+/// Unit vectors of the paper's Euler angles for a link at elevation te and absolute azimuth psi:
+/// n = (cos psi, -sin psi, 0) (the elevation axis, up to sign), e = du/dte.
+inline void eulerAxes(double te, double psi, Eigen::Vector3d& n, Eigen::Vector3d& e) {
+  n << std::cos(psi), -std::sin(psi), 0.0;
+  e << std::cos(te) * std::sin(psi), std::cos(te) * std::cos(psi), -std::sin(te);
+}
+
+/// Below this sin(te) a link counts as hanging straight down: its azimuth is not defined there.
+constexpr double kVerticalSine = 1e-9;
 
 /// Generates the inertial and gravitational terms of M q'' + h + G + (elastic) + D q' = Q.
 /// Model/data split: constant parameters and the workspace are set up once in the constructor;

@@ -17,6 +17,22 @@ enum class StiffnessModel {
   kBending,  ///< energy from the relative bend angle and parallel-transport twist between neighbours
 };
 
+/// Time-stepping scheme (simulation/integrators/).
+enum class Integrator {
+  kRk4,           ///< classical fourth-order Runge-Kutta, explicit
+  kSemiImplicit,  ///< linearized backward Euler in the angular velocities
+};
+
+/// How the equations of motion are solved for the accelerations (dynamics/).
+enum class Formulation {
+  kRecursive,  ///< the O(n) articulated-body recursion
+  kPaper,      ///< the dense 3n x 3n mass matrix generated element by element as in the paper, O(n^3)
+};
+
+/// Config spelling of each enum value ("rk4", "semi_implicit", "recursive", "paper", ...).
+const char* integratorName(Integrator integrator);
+const char* formulationName(Formulation formulation);
+
 /// How the terminal load is held (used by the simulator).
 enum class LoadMode {
   kFree,      ///< the load hangs at the tip, moved only by the cable and the fluid
@@ -91,11 +107,10 @@ struct InitialState {
 
 /// Time stepping.
 struct SimulationParams {
-  double dt = 0.001;               ///< [s]
-  std::string integrator = "rk4";  ///< rk4 | semi_implicit
-  /// recursive: O(n) articulated-body recursion; paper: the dense 3n x 3n mass matrix generated element
-  /// by element as in the paper, solved by Cholesky (O(n^3)). Same physics.
-  std::string formulation = "recursive";
+  double dt = 0.001;                                   ///< [s]
+  Integrator integrator = Integrator::kRk4;
+  /// Same physics either way (docs/MODEL.md section 4).
+  Formulation formulation = Formulation::kRecursive;
   double duration = 10.0;          ///< default length of an offline run (cable_sim without --duration) [s]
 };
 
@@ -127,6 +142,7 @@ struct LinkProperties {
   Eigen::VectorXd inertia_transverse;  ///< (n) about the CoM, solid cylinder m(l^2/12 + r^2/4) [kg m^2]
   Eigen::VectorXd inertia_polar;       ///< (n) about the link axis, solid cylinder m r^2/2 [kg m^2]
   Eigen::VectorXd submerged_mass;      ///< (n) mass minus displaced water, pi r^2 l rho [kg]
+  double added_mass_per_length = 0.0;  ///< normal added mass per length, C_a rho pi r^2 [kg/m]
   Eigen::VectorXd stiffness_elevation; ///< (n) per joint [N m/rad]
   Eigen::VectorXd stiffness_azimuth;   ///< (n) [N m/rad]
   Eigen::VectorXd stiffness_torsion;   ///< (n) [N m/rad]

@@ -1,14 +1,19 @@
 #pragma once
 /// \file
-/// \brief Time stepping of the cable: integrator, end conditions, divergence detection and recovery,
-///        and the outputs users read (paper angles, link ends, tension, energies). ROS-free.
+/// \brief Time stepping of the cable: a time scheme, the end conditions, divergence detection and
+///        recovery, and the outputs users read (paper angles, link ends, tension, energies). ROS-free.
 
+#include <memory>
 #include <string>
 
 #include <Eigen/Core>
 
-#include "cable_dynamics/params/cable_params.h"
 #include "cable_dynamics/dynamics/chain_dynamics.h"
+#include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/simulation/end_conditions.h"
+#include "cable_dynamics/simulation/stable_step.h"
+#include "cable_dynamics/simulation/step_check.h"
+#include "cable_dynamics/simulation/time_schemes/time_scheme.h"
 
 namespace cable_dynamics {
 
@@ -33,12 +38,15 @@ struct StepReport {
   std::string message;  ///< why the step failed (time and state), empty when ok
 };
 
-/// Steps the chain with a fixed dt (RK4, or the semi-implicit integrator of ChainDynamics). A step whose state is not finite, whose mass matrix fails,
-/// whose angular velocity exceeds a limit or whose energy balance moves by more than 1e-4 of the energy
-/// scale is discarded and retried as 2, 4, ..., 64 substeps; if that fails too, the state stays as it
-/// was and the report says why.
+/// Steps the chain with a fixed dt and the configured time scheme. A step whose state is not finite,
+/// whose mass matrix fails, whose angular velocity exceeds a limit or (RK4) whose energy balance grows by
+/// more than the tolerance is discarded and retried as 2, 4, ..., kMaxSubsteps substeps; if that fails
+/// too, the state stays as it was and the report says why.
 class CableSimulator {
  public:
+  /// The most pieces a step is split into before it counts as diverged.
+  static constexpr int kMaxSubsteps = 64;
+
   /// Throws std::invalid_argument when the paper stiffness model has azimuth or torsion springs or
   /// dampers (singular at the vertical: use the bending model), naming the key.
   explicit CableSimulator(const CableParams& params);
@@ -60,6 +68,7 @@ class CableSimulator {
   int links() const { return dynamics_.links(); }
   /// Per-link constants of this cable (derived once from the parameters).
   const LinkProperties& properties() const { return dynamics_.properties(); }
+  /// The state x (dynamics/state_layout.h) and the equations that step it: for tests and benchmarks.
   const Eigen::VectorXd& state() const { return x_; }
   ChainDynamics& dynamics() { return dynamics_; }
 
@@ -80,36 +89,27 @@ class CableSimulator {
   /// External base position and velocity [m], [m/s]; replaces the configured motion until reset().
   void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
 
-  /// Largest stable RK4 time step estimated from the stiffest mode (string modes of the shortest link
-  /// under the hanging tension, joint springs against link inertia) [s].
-  double estimateStableTimeStep() const;
+  /// Largest stable RK4 time step estimated from the stiffest mode, with a factor 2 of margin [s]
+  /// (stable_step.h).
+  double estimateStableTimeStep() const { return estimateStableStep(params_, properties()).recommended; }
 
  private:
-  EndInputs endsAt(double t) const;
+  /// One piece of a step, of length h: the scheme's advance, the projection of the axes, the judgement.
   bool advance(double h);
-  /// After a step: axes back on the unit sphere, and the checks for divergence.
-  bool acceptable(double balance_before, double scale_before);
-  /// Energy balance (kinetic + potential + elastic + dissipated - work input) at x, time t [J]; `scale`
-  /// gets the sum of the magnitudes of its terms [J].
-  double energyBalance(const Eigen::VectorXd& x, double t, double& scale);
-  /// The same from the mechanical energy [J] and the sum of its terms' magnitudes [J].
-  double balance(const Eigen::VectorXd& x, double mechanical, double magnitude, double& scale) const;
+  /// The energy balance at the present state and time, evaluated afresh.
+  EnergyBalance balanceNow();
 
   CableParams params_;
   ChainDynamics dynamics_;
-  double dt_;
-  bool semi_implicit_;
-  /// cached_balance_ holds the energy balance of the present state and k1_ its x' (nothing changed since)
-  bool start_cached_ = false;
-  double cached_balance_ = 0.0, cached_scale_ = 0.0;
-  double time_ = 0.0;
-  double omega_limit_;
-  Eigen::VectorXd x_, x_start_, k1_, k2_, k3_, k4_, stage_;
-  Eigen::VectorXd q_, qd_;
-  Eigen::Vector3d initial_tip_ = Eigen::Vector3d::Zero();
-  bool external_load_ = false, external_base_ = false;
-  Eigen::Vector3d load_target_pos_ = Eigen::Vector3d::Zero(), load_target_vel_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d base_target_pos_ = Eigen::Vector3d::Zero(), base_target_vel_ = Eigen::Vector3d::Zero();
+  std::unique_ptr<TimeScheme> scheme_;
+  EndConditions ends_;
+  StepLimits limits_;
+  double dt_;                           ///< [s]
+  double time_ = 0.0;                   ///< [s]
+  bool start_balance_known_ = false;    ///< start_balance_ is the present state's (nothing changed since)
+  EnergyBalance start_balance_;
+  Eigen::VectorXd x_, x_start_;         ///< (StateLayout::size(n)) the state, and at the step's start
+  Eigen::VectorXd q_, qd_;              ///< (3n) for messages
 };
 
 }  // namespace cable_dynamics

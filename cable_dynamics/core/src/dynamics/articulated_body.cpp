@@ -1,6 +1,5 @@
 /// \file
-/// \brief The O(n) formulation: an articulated-body recursion (Featherstone) written out for a chain of
-/// axisymmetric links on spherical joints (docs/MODEL.md section 4).
+/// \brief The articulated-body recursion (articulated_body.h).
 ///
 /// A spherical joint passes a force and no torque, so what the outboard part of the chain shows its
 /// parent is a 3x3 effective mass M_k and a bias force f_k at joint k: the force on the outboard part is
@@ -8,12 +7,21 @@
 /// axis) couples to nothing, and only the two transverse components move the link, so the joint's
 /// 3x3 block reduces to a 2x2 one in a basis (e1, e2) of the plane normal to the link. Every operation
 /// is on 3-vectors, symmetric 3x3 matrices and 2x2 matrices, with no heap allocation.
+///
+/// The base-end accelerations split as a_k = a0_k + d_k: a0_k, the known part (kinematics: the sum
+/// of l_j beta_j inboard of k, the base's own acceleration included) and d_k from the angular
+/// accelerations, with d_0 = 0 and d_{k+1} = d_k + l_k C_k y_k. The recursion carries the force on the
+/// outboard part as J_k = M_k d_k + F_k (F_k = M_k a0_k + f_k): the known accelerations then enter
+/// each link's own bias terms only, which the first pass forms on vectors, and not the serial pass.
+///
+/// This is the hot path of every evaluation, with the kinematics and the drag: keep it free of heap
+/// allocation and of per-link branches, and measure any change with bench/ (fluid_step).
+#include "cable_dynamics/dynamics/articulated_body.h"
+
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Geometry>
-
-#include "cable_dynamics/dynamics/chain_dynamics.h"
+#include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/hot_path.h"
 
 namespace cable_dynamics {
@@ -29,25 +37,17 @@ inline void normalPlaneBasis(const Vec3& u, Vec3& e1, Vec3& e2) {
   e2 = {b, sign + u.y * u.y * a, -u.y};
 }
 
-}  // namespace
-
-CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
-  const int n = n_;
-  // The base-end accelerations split as a_k = a0_k + d_k: a0_k, the known part (kinematics: the sum
-  // of l_j beta_j inboard of k, the base's own acceleration included) and d_k from the angular
-  // accelerations, with d_0 = 0 and d_{k+1} = d_k + l_k C_k y_k. The recursion carries the force on the
-  // outboard part as J_k = M_k d_k + F_k (F_k = M_k a0_k + f_k): the known accelerations then enter
-  // each link's own bias terms only, which the first loop forms on vectors, and not the serial pass.
-  //
-  // What each link contributes on its own: its plane basis, inertia and bias (velocity terms: the
-  // centripetal beta = u'' at zero angular acceleration and the gyroscopic torque; the known
-  // acceleration; minus the external forces). Every link alike: the loop runs over a block's lanes.
-  for (int b = 0; b < links_.blocks(); ++b) {
-    LinkBlock& block = links_.block(b);
+/// What each link contributes on its own: its plane basis, inertia and bias (velocity terms: the
+/// centripetal beta = u'' at zero angular acceleration and the gyroscopic torque; the known
+/// acceleration; minus the external forces). Every link alike: the loop runs over a block's lanes.
+EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainModel& model, LinkBlocks& links) {
+  for (int b = 0; b < links.blocks(); ++b) {
+    const LinkConstants& c = model.block(b);
+    LinkBlock& block = links.block(b);
     for (int i = 0; i < kBlockLanes; ++i) {
       const Vec3 u = block.u[i], beta = block.beta[i], omega = block.omega[i], torque = block.torque[i];
       const Vec3 axis_rate = block.axis_rate[i], known = block.known_acc[i];
-      const double l = block.length[i], across = block.across[i], added = block.added[i];
+      const double l = c.length[i], across = c.across[i], added = c.added[i];
       Vec3 e1, e2;
       normalPlaneBasis(u, e1, e2);
       block.e1.set(i, e1);
@@ -60,33 +60,39 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
       // its first moment A (l^2/2 a0 + l^3/3 beta), of which only u x (...) counts, where A acts as m' + m_a'.
       const Vec3 mean = l * known + (0.5 * l * l) * beta;
       block.own_force.set(i, across * mean - (added * dot(u, mean)) * u - block.force[i]);
-      block.own_moment.set(i, across * ((0.5 * l * l) * known) + block.third_moment[i] * beta - block.moment[i]);
+      block.own_moment.set(i, across * ((0.5 * l * l) * known) + c.third_moment[i] * beta - block.moment[i]);
       // omega x (I_rot omega) - tau, with I_rot = I_thick (I - u u^T) + I_P u u^T.
-      const double gyroscopic = block.polar[i] - block.thick_transverse[i];
+      const double gyroscopic = c.polar[i] - c.thick_transverse[i];
       const Vec3 q = (gyroscopic * dot(u, omega)) * axis_rate - torque;
       block.q1[i] = dot(e1, q);
       block.q2[i] = dot(e2, q);
       // Spin: I_P (omega'.u) = tau.u, since a spherical joint passes no torque along the link.
-      block.spin_acc[i] = block.inverse_polar[i] * dot(u, torque);
+      block.spin_acc[i] = c.inverse_polar[i] * dot(u, torque);
     }
   }
-  // Backward: from the load inwards, fold everything outboard of joint k into (M_k, F_k).
-  // The load is a point mass at the tip: J_n = m_L a_n - F_L = m_L d_n + (m_L a0_n - F_L).
-  Symmetric3 child = Symmetric3::scaledIdentity(load_inertia_);
-  Vec3 child_force = toVec3(load_inertia_ * tip_known_acc_ - load_external_);
-  for (int k = n - 1; k >= 0; --k) {
-    LinkBlock& block = links_.of(k);
+}
+
+/// From the load inwards, fold everything outboard of joint k into (M_k, F_k). The load is a point mass
+/// at the tip: J_n = m_L a_n - F_L = m_L d_n + (m_L a0_n - F_L). Returns F_0, the force on the whole
+/// chain at the base when the base end does not accelerate beyond its known part (d_0 = 0).
+EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, bool all_joint_forces) {
+  const double load_inertia = model.load().inertia;
+  Symmetric3 child = Symmetric3::scaledIdentity(load_inertia);
+  Vec3 child_force = toVec3(load_inertia * data.tip_known_acc - data.load_external);
+  for (int k = model.links() - 1; k >= 0; --k) {
+    const LinkConstants& c = model.of(k);
+    LinkBlock& block = data.links.of(k);
     const int i = LinkBlocks::lane(k);
-    const double l = block.length[i];
+    const double l = c.length[i];
     const Vec3 e1 = block.e1[i], e2 = block.e2[i];
     // Transverse inertia about joint k in the plane: S = c1 I + l^2 C^T M C with C = [u]x^T [e1 e2]
     // = [-e2, e1]; c1 is the link's own (translation integral plus thickness).
     const Vec3 m_e1 = child * e1, m_e2 = child * e2;
-    const double l2 = l * l, c1 = block.own_transverse[i];
+    const double l2 = l * l, c1 = c.own_transverse[i];
     const double s_a = c1 + l2 * dot(e2, m_e2), s_b = -l2 * dot(e1, m_e2), s_d = c1 + l2 * dot(e1, m_e1);
     // Coupling of the base-end acceleration to the transverse ones: W = E C with E = l^2/2 m' I + l M
     // (A [u]x = (m' + m_a') [u]x for A = m' I + m_a' (I - u u^T)).
-    const double half = block.half_moment[i];
+    const double half = c.half_moment[i];
     const Vec3 w1 = -(l * m_e2 + half * e2);
     const Vec3 w2 = l * m_e1 + half * e1;
     // X = W S^-1 = V / det with V = W adj(S), and M_k = l A + M_{k+1} - X W^T = l A + M_{k+1} - Z / det
@@ -118,17 +124,22 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
     child = m;
     child_force = force;
   }
-  const Vec3 base_force = child_force;  // F_0
-  // Forward, first the one serial recursion: y = y_g - X^T d_k (the transverse angular accelerations in
-  // the (e1, e2) basis) and C y = y2 e1 - y1 e2 make d_{k+1} = T_k d_k + c_k, with
-  // T_k = I + l (e2 x1^T - e1 x2^T) and c_k = l (y_g2 e1 - y_g1 e2), formed on vectors for a block's
-  // links just before its turn. The serial pass is then three short dot products per link.
+  return child_force;
+}
+
+/// The one serial recursion forward: y = y_g - X^T d_k (the transverse angular accelerations in the
+/// (e1, e2) basis) and C y = y2 e1 - y1 e2 make d_{k+1} = T_k d_k + c_k, with T_k = I + l (e2 x1^T -
+/// e1 x2^T) and c_k = l (y_g2 e1 - y_g1 e2), formed on vectors for a block's links just before its turn.
+/// The serial pass is then three short dot products per link. Returns d_n, the tip's.
+EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links) {
+  const int n = model.links();
   Vec3 d = {0.0, 0.0, 0.0};  // the base translates as prescribed: d_0 = 0
-  for (int b = 0; b < links_.blocks(); ++b) {
-    LinkBlock& block = links_.block(b);
+  for (int b = 0; b < links.blocks(); ++b) {
+    const LinkConstants& c = model.block(b);
+    LinkBlock& block = links.block(b);
     Lanes3 row_x, row_y, row_z, offset;  // T_k's rows and c_k
     for (int i = 0; i < kBlockLanes; ++i) {
-      const double l = block.length[i];
+      const double l = c.length[i];
       const Vec3 p = l * block.e1[i], r = l * block.e2[i], x1 = block.x1[i], x2 = block.x2[i];
       row_x.set(i, {1.0 + r.x * x1.x - p.x * x2.x, r.x * x1.y - p.x * x2.y, r.x * x1.z - p.x * x2.z});
       row_y.set(i, {r.y * x1.x - p.y * x2.x, 1.0 + r.y * x1.y - p.y * x2.y, r.y * x1.z - p.y * x2.z});
@@ -138,14 +149,19 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
     const int count = std::min(kBlockLanes, n - b * kBlockLanes);
     for (int i = 0; i < count; ++i) {
       block.delta_acc.set(i, d);
-      const Vec3 c = offset[i];
-      d = {dot(row_x[i], d) + c.x, dot(row_y[i], d) + c.y, dot(row_z[i], d) + c.z};
+      const Vec3 off = offset[i];
+      d = {dot(row_x[i], d) + off.x, dot(row_y[i], d) + off.y, dot(row_z[i], d) + off.z};
     }
   }
-  // Then, on vectors again, what follows from d_k: angular accelerations and the added-mass power.
+  return d;
+}
+
+/// On vectors again, what follows from d_k: angular accelerations and the added-mass power [W].
+EIGEN_ALWAYS_INLINE double accelerationPass(const ChainModel& model, LinkBlocks& links) {
   double power[kBlockLanes] = {};
-  for (int b = 0; b < links_.blocks(); ++b) {
-    LinkBlock& block = links_.block(b);
+  for (int b = 0; b < links.blocks(); ++b) {
+    const LinkConstants& c = model.block(b);
+    LinkBlock& block = links.block(b);
     for (int i = 0; i < kBlockLanes; ++i) {
       const Vec3 delta = block.delta_acc[i], e1 = block.e1[i], e2 = block.e2[i], u = block.u[i];
       const double y1 = block.y1[i] - dot(block.x1[i], delta), y2 = block.y2[i] - dot(block.x2[i], delta);
@@ -153,21 +169,36 @@ CABLE_HOT_PATH void ChainDynamics::solveRecursive(bool all_joint_forces) {
       // u'' = omega' x u + beta, with omega' x u = C y = y2 e1 - y1 e2.
       const Vec3 axis_acc = y2 * e1 - y1 * e2 + block.beta[i];
       Vec3 added_base, added_axis;
-      addedMassPowerWeights(block.added[i], block.length[i], u, block.axis_rate[i], block.base_vel[i], added_base,
+      addedMassPowerWeights(c.added[i], c.length[i], u, block.axis_rate[i], block.base_vel[i], added_base,
                             added_axis);
       power[i] += dot(added_base, block.known_acc[i] + delta) + dot(added_axis, axis_acc);
     }
   }
-  added_mass_power_ = 0.0;
-  for (int i = 0; i < kBlockLanes; ++i) added_mass_power_ += power[i];
-  // J_k = M_k d_k + F_k; at the base d_0 = 0: J_0 = F_0.
-  joint_force_.col(0) = toEigen(base_force);
-  for (int k = 1; all_joint_forces && k < n; ++k) {
-    const LinkBlock& block = links_.of(k);
+  double total = 0.0;
+  for (int i = 0; i < kBlockLanes; ++i) total += power[i];
+  return total;
+}
+
+/// J_k = M_k d_k + F_k; at the base d_0 = 0: J_0 = F_0. The load's force from the tip's acceleration.
+EIGEN_ALWAYS_INLINE void jointForcesPass(const ChainModel& model, ChainData& data, const Vec3& base_force,
+                                         const Vec3& tip_delta, bool all_joint_forces) {
+  data.joint_force.col(0) = toEigen(base_force);
+  for (int k = 1; all_joint_forces && k < model.links(); ++k) {
+    const LinkBlock& block = data.links.of(k);
     const int i = LinkBlocks::lane(k);
-    joint_force_.col(k) = toEigen(block.mass[i] * block.delta_acc[i] + block.bias[i]);
+    data.joint_force.col(k) = toEigen(block.mass[i] * block.delta_acc[i] + block.bias[i]);
   }
-  load_force_ = load_inertia_ * (tip_known_acc_ + toEigen(d)) - load_external_;
+  data.load_force = model.load().inertia * (data.tip_known_acc + toEigen(tip_delta)) - data.load_external;
+}
+
+}  // namespace
+
+CABLE_HOT_PATH void solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces) {
+  linkTermsPass(model, data.links);
+  const Vec3 base_force = backwardPass(model, data, all_joint_forces);  // F_0
+  const Vec3 tip_delta = forwardPass(model, data.links);
+  data.added_mass_power = accelerationPass(model, data.links);
+  jointForcesPass(model, data, base_force, tip_delta, all_joint_forces);
 }
 
 }  // namespace cable_dynamics

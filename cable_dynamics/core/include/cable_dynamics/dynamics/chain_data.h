@@ -1,0 +1,72 @@
+#pragma once
+/// \file
+/// \brief Everything the dynamics write while evaluating one state: the "data" half of the model/data
+///        split, sized once from a ChainModel, so that no evaluation allocates.
+
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/StdVector>
+
+#include "cable_dynamics/dynamics/azimuth_tracker.h"
+#include "cable_dynamics/dynamics/chain_model.h"
+#include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/link_block.h"
+
+namespace cable_dynamics {
+
+using Matrix3dVector = std::vector<Eigen::Matrix3d, Eigen::aligned_allocator<Eigen::Matrix3d>>;
+
+/// The dense formulation's workspace (dense_solver.cpp): 3n x 3n, so only allocated when it is used
+/// (the paper formulation, or the semi-implicit integrator that needs the mass matrix).
+struct DenseWorkspace {
+  Eigen::MatrixXd mass_matrix;       ///< (3n x 3n) of the angular velocities [kg m^2]
+  Eigen::VectorXd rhs;               ///< (3n) generalized forces [N m]
+  Eigen::VectorXd omega_rate;        ///< (3n) solved angular accelerations [rad/s^2]
+  Eigen::LLT<Eigen::MatrixXd> llt;   ///< Cholesky factor of mass_matrix
+  Matrix3dVector tensor;             ///< (n) A_k = m' I + m_a' (I - u u^T) per length [kg/m]
+  Matrix3dVector outboard;           ///< (n) B_k = sum_{j>k} l_j A_j + load [kg]
+  Matrix3dVector column;             ///< (n) E_j [u_j]x, shared by column j of M [kg m]
+  Eigen::Matrix3Xd inertial_force;   ///< (3 x n) A (l a0 + l^2/2 beta) [N]
+  Eigen::Matrix3Xd inertial_moment;  ///< (3 x n) its first moment [N m]
+  Eigen::Matrix3Xd axis_acc;         ///< (3 x n) u'' [1/s^2]
+  Eigen::Matrix3Xd link_base_acc;    ///< (3 x n) acceleration of each link's base end [m/s^2]
+
+  bool allocated() const { return mass_matrix.rows() > 0; }
+  void allocate(int links);
+};
+
+/// The per-evaluation state of the dynamics of one ChainModel: kinematics, loads, the recursion's terms,
+/// forces along the cable, powers, and the inputs that persist between evaluations (the current, the
+/// azimuth tracker). Sized once in the constructor.
+struct ChainData {
+  explicit ChainData(const ChainModel& model);
+
+  LinkBlocks links;  ///< per-link kinematics, loads and recursion terms, eight links a block
+
+  // Tip (the load) [m], [m/s], [m/s^2]: from the kinematics.
+  Eigen::Vector3d tip_position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tip_velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tip_known_acc = Eigen::Vector3d::Zero();  ///< at zero angular accelerations
+  // Load forces [N]: from the external loads; load_force after the solve.
+  Eigen::Vector3d load_external = Eigen::Vector3d::Zero();  ///< weight, drag and coupling on the load
+  Eigen::Vector3d coupling = Eigen::Vector3d::Zero();       ///< PD force of the anchor / ROV on the load
+  Eigen::Vector3d load_force = Eigen::Vector3d::Zero();     ///< force the cable exerts on the load
+
+  Eigen::Matrix3Xd joint_force;     ///< (3 x n) force on the outboard part at joint k's base end [N]
+  Eigen::Matrix3Xd spring_torque;   ///< (3 x n) joint springs on each link [N m]
+  Eigen::Matrix3Xd damping_torque;  ///< (3 x n) joint dampers on each link [N m]
+
+  // Powers [W]: of the drag, of the added-mass force, of the moving base and the coupling.
+  double drag_power = 0.0, added_mass_power = 0.0, input_power = 0.0;
+
+  // The paper springs' scratch: paper coordinates, rates (3n) [rad, rad/s], absolute azimuths (n) [rad].
+  Eigen::VectorXd paper_q, paper_qd, paper_psi;
+
+  CurrentField current;     ///< the water's current (input; replaced by a topic or a reset)
+  AzimuthTracker azimuths;  ///< continuous paper azimuths, followed after each accepted step
+  DenseWorkspace dense;     ///< allocated only when used
+};
+
+}  // namespace cable_dynamics

@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// \brief The chain's constants, built once per cable from its parameters and never changed: the
+///        "model" half of the model/data split (ChainData holds everything that changes).
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/link_block.h"
+#include "cable_dynamics/params/cable_params.h"
+
+namespace cable_dynamics {
+
+/// The terminal load's constants.
+struct LoadConstants {
+  double mass = 0.0;                ///< in air [kg] (kinetic energy)
+  double inertia = 0.0;             ///< mass plus added mass [kg] (the equations of motion)
+  double weight = 0.0;              ///< submerged weight, + down [N]
+  double drag_area = 0.0;           ///< C_d A [m^2]
+  double coupling_stiffness = 0.0;  ///< PD coupling to the anchor / ROV [N/m]
+  double coupling_damping = 0.0;    ///< [N s/m]
+};
+
+/// Everything about one cable that does not change during a run. Each constant is computed here, once,
+/// and every pass of the dynamics reads it from here: per link in `lanes` (eight links a block, the
+/// layout of the vector loops; link_block.h), per link as Eigen vectors in `properties` (the public
+/// description: reports, the URDF, the paper model), and the cable-wide scalars.
+class ChainModel {
+ public:
+  explicit ChainModel(const CableParams& params);
+
+  int links() const { return n_; }
+  const LinkProperties& properties() const { return properties_; }
+  StiffnessModel stiffnessModel() const { return properties_.stiffness_model; }
+  Formulation formulation() const { return formulation_; }
+  /// Any joint spring or damper at all (the paper model with none skips the joint torques).
+  bool hasSprings() const { return has_springs_; }
+  double fluidDensity() const { return fluid_density_; }  ///< [kg/m^3], 0 in air
+  const LinkDrag& drag() const { return drag_; }
+  const LoadConstants& load() const { return load_; }
+
+  /// Per-link constants, eight links a block; lanes past the last link hold a massless link of zero length.
+  int blocks() const { return static_cast<int>(lanes_.size()); }
+  const LinkConstants& block(int b) const { return lanes_[b]; }
+  const LinkConstants& of(int k) const { return lanes_[k / kBlockLanes]; }
+  /// Scalar constant `field` of link k, e.g. get(&LinkConstants::length, k).
+  double get(double (LinkConstants::*field)[kBlockLanes], int k) const { return (of(k).*field)[k % kBlockLanes]; }
+
+ private:
+  int n_;
+  LinkProperties properties_;
+  Formulation formulation_;
+  bool has_springs_;
+  double fluid_density_;
+  LinkDrag drag_;
+  LoadConstants load_;
+  std::vector<LinkConstants> lanes_;  // C++17's allocator honours the 64-byte alignment
+};
+
+}  // namespace cable_dynamics

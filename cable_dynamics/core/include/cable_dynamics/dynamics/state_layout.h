@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// \brief The flat state vector x the integrators step, and the end inputs of one evaluation.
+
+#include <Eigen/Core>
+
+namespace cable_dynamics {
+
+/// Layout of the flat state vector x (size 7n + 2): per link its unit axis u_k, its total twist about
+/// the vertical sigma_k = psi_k + phi_k and its angular velocity omega_k (paper frame), then two energy
+/// accumulators.
+struct StateLayout {
+  static constexpr int kPerLink = 7;  ///< u (3), sigma (1), omega (3)
+  static int axis(int k) { return kPerLink * k; }
+  static int twist(int k) { return kPerLink * k + 3; }
+  static int omega(int k) { return kPerLink * k + 4; }
+  static int dissipated(int n) { return kPerLink * n; }  ///< energy taken out by drag, added mass, dampers [J]
+  static int workInput(int n) { return kPerLink * n + 1; }  ///< work done by the moving ends [J]
+  static int size(int n) { return kPerLink * n + 2; }
+};
+
+/// What drives the ends during one evaluation (paper frame, z down, origin at the base's rest position).
+struct EndInputs {
+  Eigen::Vector3d base_position = Eigen::Vector3d::Zero();      ///< [m]
+  Eigen::Vector3d base_velocity = Eigen::Vector3d::Zero();      ///< [m/s]
+  Eigen::Vector3d base_acceleration = Eigen::Vector3d::Zero();  ///< [m/s^2]
+  bool load_coupled = false;                                    ///< PD coupling of the tip to a target
+  Eigen::Vector3d target_position = Eigen::Vector3d::Zero();    ///< [m]
+  Eigen::Vector3d target_velocity = Eigen::Vector3d::Zero();    ///< [m/s]
+};
+
+}  // namespace cable_dynamics

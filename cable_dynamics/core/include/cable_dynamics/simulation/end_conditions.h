@@ -1,0 +1,46 @@
+#pragma once
+/// \file
+/// \brief What holds the cable's ends at each instant: the base's prescribed or external motion and the
+///        load's anchor or ROV target. Inputs in world axes (REP-103, z up) with the origin at the base's
+///        rest position; the dynamics get them in the paper frame (EndInputs).
+
+#include <Eigen/Core>
+
+#include "cable_dynamics/dynamics/state_layout.h"
+#include "cable_dynamics/params/cable_params.h"
+
+namespace cable_dynamics {
+
+/// Position, velocity and acceleration of a prescribed motion at time t [s], in the paper frame
+/// [m, m/s, m/s^2].
+void motionAt(const MotionParams& motion, double t, Eigen::Vector3d& position, Eigen::Vector3d& velocity,
+              Eigen::Vector3d& acceleration);
+
+/// The ends' inputs over time: the configured motions until an external target replaces them.
+class EndConditions {
+ public:
+  EndConditions(const BaseParams& base, const LoadParams& load);
+
+  /// The inputs at time t [s] (paper frame).
+  EndInputs at(double t) const;
+
+  /// Back to the configured motions (external targets dropped).
+  void reset();
+  /// The tip's start position (paper frame) [m], which the load's configured motion is relative to.
+  void setInitialTip(const Eigen::Vector3d& initial_tip) { initial_tip_ = initial_tip; }
+  /// External load target (world axes) [m], [m/s]; replaces the configured motion until reset().
+  void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
+  /// External base position and velocity (world axes) [m], [m/s]; replaces the configured motion.
+  void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
+
+ private:
+  BaseParams base_;
+  LoadParams load_;
+  Eigen::Vector3d initial_tip_ = Eigen::Vector3d::Zero();  ///< paper frame [m]
+  bool external_load_ = false, external_base_ = false;
+  // External targets, converted to the paper frame once [m], [m/s].
+  Eigen::Vector3d load_position_ = Eigen::Vector3d::Zero(), load_velocity_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d base_position_ = Eigen::Vector3d::Zero(), base_velocity_ = Eigen::Vector3d::Zero();
+};
+
+}  // namespace cable_dynamics

@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// \brief Linearized backward Euler in the angular velocities (first order, stable for stiff springs and
+///        strong drag), with the Jacobians of the generalized forces by central differences.
+
+#include <Eigen/LU>
+
+#include "cable_dynamics/simulation/time_schemes/time_scheme.h"
+
+namespace cable_dynamics {
+
+/// M dw = h (Q(x_n) + K_r h (w_n + dw) + K_w dw), with K_r and K_w the Jacobians of the generalized
+/// forces (springs, dampers, drag, coupling) with respect to small rotations of each link and to the
+/// angular velocities; then the orientations advance with the new velocities. The Jacobians cost 12n
+/// evaluations of the O(n) forces and the dense solve O(n^3): a reference for stiff cables, not fast.
+class SemiImplicitScheme : public TimeScheme {
+ public:
+  explicit SemiImplicitScheme(int links);
+
+  bool advance(ChainDynamics& dynamics, const EndConditions& ends, double t, double h, Eigen::VectorXd& x) override;
+  bool balancesEnergy() const override { return false; }
+
+ private:
+  /// Step of the central differences in the angular velocities [rad/s] and the rotations [rad].
+  static constexpr double kPerturbation = 1e-6;
+
+  Eigen::MatrixXd jacobian_velocity_, jacobian_rotation_, system_;  ///< (3n x 3n)
+  Eigen::VectorXd perturbed_;                                       ///< (state size)
+  Eigen::VectorXd force_plus_, force_minus_, velocity_, step_rhs_, delta_, mean_rate_;  ///< (3n)
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+};
+
+}  // namespace cable_dynamics

@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// \brief The time schemes that step x' = f(t, x), as a family apart from the model they step (as
+///        MuJoCo's integrators and MoorDyn's time schemes are): one interface, one file each, chosen by
+///        the Integrator enum.
+
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "cable_dynamics/dynamics/chain_dynamics.h"
+#include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/simulation/end_conditions.h"
+
+namespace cable_dynamics {
+
+/// One fixed-step scheme. Holds its own workspace (sized at construction: no allocation in a step).
+class TimeScheme {
+ public:
+  virtual ~TimeScheme() = default;
+
+  /// Advances the state x (StateLayout) from time t [s] by h [s], with the ends' inputs `ends` gives at
+  /// each stage. Returns false when an evaluation fails (a non-finite state or acceleration, a mass
+  /// matrix that is not positive definite, a singular linear system); x is then unspecified.
+  virtual bool advance(ChainDynamics& dynamics, const EndConditions& ends, double t, double h,
+                       Eigen::VectorXd& x) = 0;
+
+  /// true when the scheme's energy balance holds to its order, so that a step that creates energy has
+  /// gone unstable (RK4); false for the semi-implicit scheme, whose power terms are first order.
+  virtual bool balancesEnergy() const = 0;
+
+  /// Evaluates x' at the end state x of a step (inputs `ends`), leaving its kinematics in the dynamics'
+  /// data for the energy check. RK4 keeps that x' as the next step's first stage (the "first same as
+  /// last" reuse) until forget(). Returns false when x' is not finite.
+  virtual bool evaluateEnd(ChainDynamics& dynamics, const EndInputs& ends, const Eigen::VectorXd& x);
+
+  /// An input changed or a step was discarded: nothing evaluated earlier may be reused.
+  virtual void forget() {}
+};
+
+/// The scheme `integrator` for states of `state_size` entries and chains of `links` links.
+std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links);
+
+}  // namespace cable_dynamics

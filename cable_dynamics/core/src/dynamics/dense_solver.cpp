@@ -1,0 +1,131 @@
+#include "cable_dynamics/dynamics/dense_solver.h"
+
+#include <cassert>
+
+#include <Eigen/Geometry>
+
+#include "cable_dynamics/dynamics/fluid.h"
+
+namespace cable_dynamics {
+namespace {
+
+inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return s;
+}
+
+/// A_k = m' I + m_a' (I - u u^T) per link (O(n)).
+void inertiaTensors(const ChainModel& model, ChainData& data) {
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  for (int k = 0; k < model.links(); ++k) {
+    const Eigen::Vector3d axis = data.links.get(&LinkBlock::u, k);
+    data.dense.tensor[k] = model.get(&LinkConstants::mass_per_length, k) * identity +
+                           model.get(&LinkConstants::added, k) * (identity - axis * axis.transpose());
+  }
+}
+
+/// Power of the added-mass force on link k [W], from its base-end and axis accelerations.
+double addedMassPower(const ChainModel& model, const ChainData& data, int k, const Eigen::Vector3d& base_acc,
+                      const Eigen::Vector3d& axis_acc) {
+  const LinkBlock& block = data.links.of(k);
+  const int i = LinkBlocks::lane(k);
+  Vec3 base_weight, axis_weight;
+  addedMassPowerWeights(model.of(k).added[i], model.of(k).length[i], block.u[i], block.axis_rate[i], block.base_vel[i],
+                        base_weight, axis_weight);
+  return dot(base_weight, toVec3(base_acc)) + dot(axis_weight, toVec3(axis_acc));
+}
+
+}  // namespace
+
+void assembleGeneralizedForces(const ChainModel& model, ChainData& data) {
+  assert(data.dense.allocated());
+  DenseWorkspace& w = data.dense;
+  const LinkBlocks& links = data.links;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  const double load_inertia = model.load().inertia;
+  inertiaTensors(model, data);
+  // Outboard inertia B_k = sum_{j>k} l_j A_j + load, and the known-acceleration (bias) integrals.
+  Eigen::Matrix3d outboard = load_inertia * identity;
+  Eigen::Vector3d outboard_force = data.load_external - load_inertia * data.tip_known_acc;
+  for (int k = model.links() - 1; k >= 0; --k) {
+    w.outboard[k] = outboard;
+    const double l = model.get(&LinkConstants::length, k);
+    const Eigen::Matrix3d& a = w.tensor[k];
+    const Eigen::Vector3d known = links.get(&LinkBlock::known_acc, k), beta = links.get(&LinkBlock::beta, k);
+    w.inertial_force.col(k) = a * (l * known + 0.5 * l * l * beta);
+    w.inertial_moment.col(k) = a * (0.5 * l * l * known + (l * l * l / 3.0) * beta);
+    // Generalized force of link k's angular velocity: moment about joint k of everything outboard of it.
+    const Eigen::Vector3d lever = l * outboard_force + links.get(&LinkBlock::moment, k) - w.inertial_moment.col(k);
+    const Eigen::Vector3d omega = links.get(&LinkBlock::omega, k), axis = links.get(&LinkBlock::u, k);
+    const double ip = model.get(&LinkConstants::polar, k), it = model.get(&LinkConstants::thick_transverse, k);
+    const Eigen::Vector3d spin_axis = axis * axis.dot(omega);
+    const Eigen::Vector3d angular_momentum = it * (omega - spin_axis) + ip * spin_axis;
+    w.rhs.segment<3>(3 * k) = axis.cross(lever) + links.get(&LinkBlock::torque, k) - omega.cross(angular_momentum);
+    outboard_force += links.get(&LinkBlock::force, k) - w.inertial_force.col(k);
+    outboard += l * a;
+  }
+}
+
+void assembleMassMatrix(const ChainModel& model, ChainData& data) {
+  DenseWorkspace& w = data.dense;
+  const LinkBlocks& links = data.links;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  // M_rj = -l_r [u_r]x E_j [u_j]x for r < j with E_j = l_j (l_j/2 A_j + B_j); diagonal blocks use
+  // l_j^2 (l_j/3 A_j + B_j) plus the thickness inertia of the link.
+  for (int j = 0; j < model.links(); ++j) {
+    const double l = model.get(&LinkConstants::length, j);
+    const Eigen::Vector3d axis = links.get(&LinkBlock::u, j);
+    const Eigen::Matrix3d uj = skew(axis);
+    w.column[j] = (l * (0.5 * l * w.tensor[j] + w.outboard[j])) * uj;
+    const Eigen::Matrix3d diagonal = -uj * ((l * l) * ((l / 3.0) * w.tensor[j] + w.outboard[j])) * uj;
+    const Eigen::Matrix3d rotation_inertia =
+        model.get(&LinkConstants::thick_transverse, j) * (identity - axis * axis.transpose()) +
+        model.get(&LinkConstants::polar, j) * axis * axis.transpose();
+    w.mass_matrix.block<3, 3>(3 * j, 3 * j) = diagonal + rotation_inertia;
+    for (int r = 0; r < j; ++r) {
+      const Eigen::Matrix3d block =
+          -model.get(&LinkConstants::length, r) * skew(links.get(&LinkBlock::u, r)) * w.column[j];
+      w.mass_matrix.block<3, 3>(3 * r, 3 * j) = block;
+      w.mass_matrix.block<3, 3>(3 * j, 3 * r) = block.transpose();
+    }
+  }
+}
+
+void denseJointForces(const ChainModel& model, ChainData& data, const Eigen::VectorXd& omega_rate) {
+  // Accelerations of the link axes and base ends with the solved angular accelerations, then the force
+  // on everything outboard of each joint from Newton's law for that part: J_k = sum (A a - f).
+  DenseWorkspace& w = data.dense;
+  const LinkBlocks& links = data.links;
+  Eigen::Vector3d acc = links.get(&LinkBlock::known_acc, 0);  // the base's own acceleration
+  for (int k = 0; k < model.links(); ++k) {
+    w.axis_acc.col(k) = omega_rate.segment<3>(3 * k).cross(links.get(&LinkBlock::u, k)) + links.get(&LinkBlock::beta, k);
+    w.link_base_acc.col(k) = acc;
+    acc += model.get(&LinkConstants::length, k) * w.axis_acc.col(k);
+  }
+  data.load_force = model.load().inertia * acc - data.load_external;  // acc: the tip's
+  Eigen::Vector3d outboard = data.load_force;
+  data.added_mass_power = 0.0;
+  for (int k = model.links() - 1; k >= 0; --k) {
+    const double l = model.get(&LinkConstants::length, k);
+    const Eigen::Vector3d mean_acc = l * w.link_base_acc.col(k) + 0.5 * l * l * w.axis_acc.col(k);
+    outboard += w.tensor[k] * mean_acc - links.get(&LinkBlock::force, k);
+    data.joint_force.col(k) = outboard;
+    data.added_mass_power += addedMassPower(model, data, k, w.link_base_acc.col(k), w.axis_acc.col(k));
+  }
+}
+
+bool solveDense(const ChainModel& model, ChainData& data) {
+  DenseWorkspace& w = data.dense;
+  assembleGeneralizedForces(model, data);
+  assembleMassMatrix(model, data);
+  w.llt.compute(w.mass_matrix);
+  if (w.llt.info() != Eigen::Success) return false;
+  w.omega_rate = w.rhs;
+  w.llt.solveInPlace(w.omega_rate);
+  denseJointForces(model, data, w.omega_rate);
+  for (int k = 0; k < model.links(); ++k) data.links.set(&LinkBlock::omega_rate, k, w.omega_rate.segment<3>(3 * k));
+  return true;
+}
+
+}  // namespace cable_dynamics

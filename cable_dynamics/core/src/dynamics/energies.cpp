@@ -1,0 +1,33 @@
+#include "cable_dynamics/dynamics/energies.h"
+
+#include "cable_dynamics/dynamics/hot_path.h"
+
+namespace cable_dynamics {
+
+CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const ChainData& data, double& kinetic,
+                                              double& potential) {
+  // Translation integrated along each link, rotation of the link's thickness, the load. Per-lane sums
+  // (the padding lanes add zero: no mass, no weight), so that the loop runs on vectors.
+  double kinetic_lanes[kBlockLanes] = {}, potential_lanes[kBlockLanes] = {};
+  for (int b = 0; b < data.links.blocks(); ++b) {
+    const LinkConstants& constants = model.block(b);
+    const LinkBlock& block = data.links.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const double l = constants.length[i], m = constants.mass_per_length[i];
+      const Vec3 v = block.base_vel[i], c = block.axis_rate[i], omega = block.omega[i], axis = block.u[i];
+      const double spin = dot(omega, axis);
+      kinetic_lanes[i] += 0.5 * m * (l * dot(v, v) + l * l * dot(v, c) + (l * l * l / 3.0) * dot(c, c)) +
+                          0.5 * constants.thick_transverse[i] * (dot(omega, omega) - spin * spin) +
+                          0.5 * constants.polar[i] * spin * spin;
+      potential_lanes[i] -= constants.weight[i] * (block.base_pos.z[i] + 0.5 * l * axis.z);
+    }
+  }
+  kinetic = 0.5 * model.load().mass * data.tip_velocity.squaredNorm();
+  potential = -model.load().weight * data.tip_position.z();
+  for (int i = 0; i < kBlockLanes; ++i) {
+    kinetic += kinetic_lanes[i];
+    potential += potential_lanes[i];
+  }
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,60 @@
+#include "cable_dynamics/dynamics/external_loads.h"
+
+#include <algorithm>
+
+#include "cable_dynamics/dynamics/hot_path.h"
+
+namespace cable_dynamics {
+
+CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& data, const EndInputs& ends) {
+  const int n = model.links();
+  const CurrentField& current_field = data.current;
+  const bool in_water = model.fluidDensity() > 0.0;
+  const bool uniform = current_field.uniform();
+  const Vec3 current = toVec3(current_field.uniformValue());
+  double drag_power = 0.0;
+  for (int b = 0; b < data.links.blocks(); ++b) {
+    const LinkConstants& constants = model.block(b);
+    LinkBlock& block = data.links.block(b);
+    // Submerged weight, uniform along the link: total and first moment about the base end.
+    for (int i = 0; i < kBlockLanes; ++i) {
+      block.force.set(i, {0.0, 0.0, constants.weight[i]});
+      block.moment.set(i, {0.0, 0.0, 0.5 * constants.length[i] * constants.weight[i]});
+    }
+    if (!in_water) continue;
+    if (uniform) {
+      model.drag().addUniform(current, constants, block);
+    } else {
+      const int first = b * kBlockLanes, count = std::min(kBlockLanes, n - first);
+      for (int i = 0; i < count; ++i) {
+        Eigen::Vector3d fd, md;
+        model.drag().pointwise(current_field, constants.length[i], toEigen(block.base_pos[i]),
+                               toEigen(block.base_vel[i]), toEigen(block.u[i]), toEigen(block.axis_rate[i]), fd, md);
+        block.force.set(i, block.force[i] + toVec3(fd));
+        block.moment.set(i, block.moment[i] + toVec3(md));
+        block.drag_power[i] = fd.dot(toEigen(block.base_vel[i])) + md.dot(toEigen(block.axis_rate[i]));
+      }
+    }
+    double power = 0.0;  // the padding lanes' drag is zero (zero length)
+    for (int i = 0; i < kBlockLanes; ++i) power += block.drag_power[i];
+    drag_power += power;
+  }
+  // The load: weight, drag, and the PD coupling to its anchor or to the ROV.
+  const LoadConstants& load = model.load();
+  data.load_external = load.weight * Eigen::Vector3d::UnitZ();
+  if (in_water && load.drag_area > 0.0) {
+    const Eigen::Vector3d relative = current_field.at(data.tip_position.z()) - data.tip_velocity;
+    const Eigen::Vector3d drag = 0.5 * model.fluidDensity() * load.drag_area * relative.norm() * relative;
+    data.load_external += drag;
+    drag_power += drag.dot(data.tip_velocity);
+  }
+  data.drag_power = drag_power;
+  data.coupling.setZero();
+  if (ends.load_coupled) {
+    data.coupling = -load.coupling_stiffness * (data.tip_position - ends.target_position) -
+                    load.coupling_damping * (data.tip_velocity - ends.target_velocity);
+    data.load_external += data.coupling;
+  }
+}
+
+}  // namespace cable_dynamics

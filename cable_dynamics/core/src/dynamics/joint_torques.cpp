@@ -1,0 +1,128 @@
+#include "cable_dynamics/dynamics/joint_torques.h"
+
+#include <cmath>
+
+#include "cable_dynamics/dynamics/joint_geometry.h"
+#include "cable_dynamics/dynamics/paper_coordinates.h"
+#include "cable_dynamics/dynamics/paper_model.h"
+#include "cable_dynamics/dynamics/state_layout.h"
+
+namespace cable_dynamics {
+namespace {
+
+const Eigen::Vector3d kDown = Eigen::Vector3d::UnitZ();
+
+/// The paper's springs and dampers act on the generalized coordinates: Q = -K q - C q'. Mapped to world
+/// torques by virtual power: tau = -Q_te n + (Q_psi - Q_phi cos te)/sin te e - Q_phi u, with Q in the
+/// absolute angles (Q_psi_i = Q_a_i - Q_a_{i+1}). Azimuth and torsion springs have no limit as
+/// sin te -> 0 unless Q_psi = Q_phi: the paper's K is singular there (docs/MODEL.md section 5).
+void paperSpringTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
+  const int n = model.links();
+  const LinkProperties& p = model.properties();
+  Eigen::Vector3d q_next = Eigen::Vector3d::Zero(), c_next = Eigen::Vector3d::Zero();
+  // Paper coordinates in a forward pass, then torques backwards so Q_a_{i+1}, Q_t_{i+1} are at hand.
+  paperCoordinates(n, data.azimuths, x, data.paper_q, data.paper_qd);
+  double psi_sum = 0.0;
+  for (int k = 0; k < n; ++k) data.paper_psi(k) = (psi_sum += data.paper_q(3 * k + 1));
+  for (int k = n - 1; k >= 0; --k) {
+    const Eigen::Vector3d stiffness(p.stiffness_elevation(k), p.stiffness_azimuth(k), p.stiffness_torsion(k));
+    const Eigen::Vector3d damping(p.damping_elevation(k), p.damping_azimuth(k), p.damping_torsion(k));
+    const Eigen::Vector3d q_spring = -stiffness.cwiseProduct(data.paper_q.segment<3>(3 * k));
+    const Eigen::Vector3d q_damper = -damping.cwiseProduct(data.paper_qd.segment<3>(3 * k));
+    const double te = data.paper_q(3 * k);
+    const Eigen::Vector3d axis = data.links.get(&LinkBlock::u, k);
+    Eigen::Vector3d nvec, evec;
+    eulerAxes(te, data.paper_psi(k), nvec, evec);
+    const double sine = std::sin(te), cosine = std::cos(te);
+    const auto to_torque = [&](const Eigen::Vector3d& own, const Eigen::Vector3d& next) -> Eigen::Vector3d {
+      const double q_te = own(0), q_psi = own(1) - next(1), q_phi = own(2) - next(2);
+      const double across = std::abs(sine) > kVerticalSine ? (q_psi - q_phi * cosine) / sine : 0.0;
+      return -q_te * nvec + across * evec - q_phi * axis;
+    };
+    data.spring_torque.col(k) = to_torque(q_spring, q_next);
+    data.damping_torque.col(k) = to_torque(q_damper, c_next);
+    q_next = q_spring;
+    c_next = q_damper;
+  }
+}
+
+/// Joint k couples link k-1 (the fixed base direction, straight down, for k = 0) and link k.
+void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
+  const LinkProperties& p = model.properties();
+  const LinkBlocks& links = data.links;
+  for (int k = 0; k < model.links(); ++k) {
+    const Eigen::Vector3d prev = k > 0 ? links.get(&LinkBlock::u, k - 1) : kDown;
+    const Eigen::Vector3d axis = links.get(&LinkBlock::u, k);
+    const JointGeometry g =
+        jointGeometry(prev, axis, x(StateLayout::twist(k)), k > 0 ? x(StateLayout::twist(k - 1)) : 0.0);
+    // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
+    const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * bendOverSine(g.bend, g.sine) * g.cross;
+    // Twist: a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
+    const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + g.cosine);
+    const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
+    // Dampers on the relative angular velocity: across the mean axis (bending) and about it (twist).
+    const Eigen::Vector3d relative =
+        links.get(&LinkBlock::omega, k) - (k > 0 ? links.get(&LinkBlock::omega, k - 1) : Eigen::Vector3d::Zero());
+    const Eigen::Vector3d direction = (prev + axis).normalized();
+    const double about = relative.dot(direction);
+    const Eigen::Vector3d damper =
+        -p.damping_elevation(k) * (relative - about * direction) - p.damping_torsion(k) * about * direction;
+    data.spring_torque.col(k) += bend_torque + twist_torque;
+    data.damping_torque.col(k) += damper;
+    if (k > 0) {
+      data.spring_torque.col(k - 1) -= bend_torque + twist_torque;
+      data.damping_torque.col(k - 1) -= damper;
+    }
+  }
+}
+
+}  // namespace
+
+void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, bool with_dampers) {
+  const bool paper = model.stiffnessModel() == StiffnessModel::kPaper;
+  if (paper && !model.hasSprings()) return;  // all zero since construction (the presets)
+  data.spring_torque.setZero();
+  data.damping_torque.setZero();
+  if (paper) {
+    paperSpringTorques(model, data, x);
+  } else {
+    bendingSpringTorques(model, data, x);
+  }
+  if (!with_dampers) data.damping_torque.setZero();
+  for (int k = 0; k < model.links(); ++k) {
+    data.links.set(&LinkBlock::torque, k, data.spring_torque.col(k) + data.damping_torque.col(k));
+  }
+}
+
+double damperPower(const ChainModel& model, const ChainData& data) {
+  if (model.stiffnessModel() == StiffnessModel::kPaper && !model.hasSprings()) return 0.0;  // no damper at all
+  double power = 0.0;
+  for (int k = 0; k < model.links(); ++k) power += data.damping_torque.col(k).dot(data.links.get(&LinkBlock::omega, k));
+  return power;
+}
+
+double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
+  const LinkProperties& p = model.properties();
+  double energy = 0.0;
+  if (model.stiffnessModel() == StiffnessModel::kPaper) {
+    if (!model.hasSprings()) return 0.0;
+    const Eigen::VectorXd& q = data.paper_q;
+    paperCoordinates(model.links(), data.azimuths, x, data.paper_q, data.paper_qd);
+    for (int k = 0; k < model.links(); ++k) {
+      energy += 0.5 * (p.stiffness_elevation(k) * q(3 * k) * q(3 * k) +
+                       p.stiffness_azimuth(k) * q(3 * k + 1) * q(3 * k + 1) +
+                       p.stiffness_torsion(k) * q(3 * k + 2) * q(3 * k + 2));
+    }
+    return energy;
+  }
+  const LinkBlocks& links = data.links;
+  for (int k = 0; k < model.links(); ++k) {
+    const Eigen::Vector3d prev = k > 0 ? links.get(&LinkBlock::u, k - 1) : kDown;
+    const JointGeometry g = jointGeometry(prev, links.get(&LinkBlock::u, k), x(StateLayout::twist(k)),
+                                          k > 0 ? x(StateLayout::twist(k - 1)) : 0.0);
+    energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
+  }
+  return energy;
+}
+
+}  // namespace cable_dynamics

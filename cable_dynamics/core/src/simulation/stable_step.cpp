@@ -1,0 +1,77 @@
+#include "cable_dynamics/simulation/stable_step.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "cable_dynamics/params/config_section.h"
+
+namespace cable_dynamics {
+namespace {
+
+/// RK4's stability limit of h |lambda| on the imaginary axis (2 sqrt 2); 2.78 on the real axis is close.
+constexpr double kRk4Reach = 2.8;
+/// The recommended step keeps a factor 2 from the limit.
+constexpr double kMargin = 2.0;
+
+/// Keeps the largest rate seen and the mode it belongs to.
+struct Stiffest {
+  double rate = 0.0;
+  std::string mode;
+  void consider(double candidate, const std::string& name) {
+    if (candidate > rate) {
+      rate = candidate;
+      mode = name;
+    }
+  }
+};
+
+}  // namespace
+
+StableStep estimateStableStep(const CableParams& params, const LinkProperties& p) {
+  Stiffest stiffest;
+  const int n = p.n;
+  // Hanging tension at the top: the submerged weight of everything below.
+  const double tension = std::abs(p.gravity * (p.submerged_mass.sum() + p.load_submerged_mass));
+  for (int k = 0; k < n; ++k) {
+    const std::string joint = std::to_string(k + 1);
+    const double l = p.length(k), m = p.mass(k) + p.added_mass_per_length * l;
+    // Highest mode of a beaded string: 2 sqrt(T / (m l)) for links of mass m and length l.
+    stiffest.consider(2.0 * std::sqrt(tension / (m * l)), "the string mode of link " + joint + " under the hanging tension");
+    const double bend_inertia = p.mass(k) * l * l / 12.0;
+    const double k_bend = std::max(p.stiffness_elevation(k), p.stiffness_azimuth(k));
+    stiffest.consider(std::sqrt(4.0 * k_bend / bend_inertia), "the bend spring of joint " + joint);
+    stiffest.consider(std::sqrt(4.0 * p.stiffness_torsion(k) / p.inertia_polar(k)), "the torsion spring of joint " + joint);
+    const double c_bend = std::max(p.damping_elevation(k), p.damping_azimuth(k));
+    stiffest.consider(4.0 * c_bend / bend_inertia, "the bend damper of joint " + joint);
+    stiffest.consider(4.0 * p.damping_torsion(k) / p.inertia_polar(k), "the torsion damper of joint " + joint);
+  }
+  if (params.load.mode != LoadMode::kFree && n > 0) {
+    const double l = p.length(n - 1);
+    const double tip_mass = p.load_mass + params.load.added_mass + 0.5 * (p.mass(n - 1) + p.added_mass_per_length * l);
+    stiffest.consider(std::sqrt(params.load.coupling_stiffness / tip_mass), "the load coupling's stiffness");
+    stiffest.consider(params.load.coupling_damping / tip_mass, "the load coupling's damping");
+  }
+  StableStep s;
+  s.rate = stiffest.rate;
+  s.mode = stiffest.mode;
+  const double infinity = std::numeric_limits<double>::infinity();
+  s.limit = s.rate > 0.0 ? kRk4Reach / s.rate : infinity;
+  s.recommended = s.rate > 0.0 ? kRk4Reach / (kMargin * s.rate) : infinity;
+  return s;
+}
+
+void requireStableTimeStep(const CableParams& params, const LinkProperties& properties) {
+  if (params.simulation.integrator != Integrator::kRk4) return;
+  const StableStep s = estimateStableStep(params, properties);
+  if (params.simulation.dt <= s.limit) return;
+  std::ostringstream expected;
+  expected << "at most " << s.limit << " s for this cable with integrator rk4 (limited by " << s.mode
+           << ", |lambda| = " << s.rate << " 1/s; recommended " << s.recommended
+           << " s), or simulation.integrator: semi_implicit";
+  std::ostringstream value;
+  value << params.simulation.dt;
+  throw ConfigError("simulation.dt", value.str(), expected.str());
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,101 @@
+#include "cable_dynamics/simulation/time_schemes/semi_implicit.h"
+
+#include <cassert>
+
+#include <Eigen/Geometry>
+
+#include "cable_dynamics/dynamics/dense_solver.h"
+#include "cable_dynamics/dynamics/joint_torques.h"
+
+namespace cable_dynamics {
+namespace {
+
+const Eigen::Vector3d kDown = Eigen::Vector3d::UnitZ();
+
+/// sigma' for a link of axis u turning at omega: -omega.(e_z + u)/(1 + u_z) (kinematics.cpp).
+inline double twistRate(const Eigen::Vector3d& omega, const Eigen::Vector3d& axis) {
+  const double denominator = 1.0 + axis.z();
+  return denominator > 1e-12 ? -omega.dot(kDown + axis) / denominator : -omega.dot(axis);
+}
+
+}  // namespace
+
+SemiImplicitScheme::SemiImplicitScheme(int links) {
+  const int dof = 3 * links;
+  for (Eigen::MatrixXd* m : {&jacobian_velocity_, &jacobian_rotation_, &system_}) m->setZero(dof, dof);
+  for (Eigen::VectorXd* v : {&force_plus_, &force_minus_, &velocity_, &step_rhs_, &delta_, &mean_rate_}) {
+    v->setZero(dof);
+  }
+  perturbed_.setZero(StateLayout::size(links));
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(dof);
+}
+
+bool SemiImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,
+                                 Eigen::VectorXd& x) {
+  assert(x.size() == f.stateSize());
+  if (!x.allFinite()) return false;
+  const EndInputs ends = end_conditions.at(t);
+  const int n = f.links(), dof = 3 * n;
+  const double eps = kPerturbation;
+  // Jacobians of the generalized forces (external, springs, dampers and the velocity terms) with respect
+  // to the angular velocities and to small rotations of each link, by central differences. Each column
+  // costs one O(n) force evaluation, O(n^2) in all: cheaper than the O(n^3) solve below.
+  perturbed_ = x;
+  for (int j = 0; j < dof; ++j) {
+    const int index = StateLayout::omega(j / 3) + j % 3;
+    perturbed_(index) = x(index) + eps;
+    f.generalizedForces(perturbed_, ends, true, force_plus_);
+    perturbed_(index) = x(index) - eps;
+    f.generalizedForces(perturbed_, ends, true, force_minus_);
+    perturbed_(index) = x(index);
+    jacobian_velocity_.col(j) = (force_plus_ - force_minus_) / (2.0 * eps);
+  }
+  // The rotation Jacobian is the stiffness: it leaves the dampers out. (The paper's elevation damper
+  // turns with the azimuth, which is ill-conditioned near the vertical; its rate Jacobian above is not.)
+  for (int j = 0; j < dof; ++j) {
+    const int k = j / 3;
+    const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k)).normalized();
+    const Eigen::Vector3d turn = Eigen::Vector3d::Unit(j % 3);
+    // A rotation by e about `turn` moves u by e turn x u and sigma by -e turn.(e_z + u)/(1 + u_z).
+    const double twist_rate = twistRate(turn, axis);
+    for (const double sign : {1.0, -1.0}) {
+      perturbed_.segment<3>(StateLayout::axis(k)) = (axis + sign * eps * turn.cross(axis)).normalized();
+      perturbed_(StateLayout::twist(k)) = x(StateLayout::twist(k)) + sign * eps * twist_rate;
+      f.generalizedForces(perturbed_, ends, false, sign > 0 ? force_plus_ : force_minus_);
+    }
+    perturbed_.segment<3>(StateLayout::axis(k)) = x.segment<3>(StateLayout::axis(k));
+    perturbed_(StateLayout::twist(k)) = x(StateLayout::twist(k));
+    jacobian_rotation_.col(j) = (force_plus_ - force_minus_) / (2.0 * eps);
+  }
+  // Linearized backward Euler in the velocities: M dw = h (Q(x_n) + K_r h (w_n + dw) + K_w dw), with
+  // K_r, K_w the Jacobians above, then the orientations advance with the new velocities.
+  f.generalizedForces(x, ends, true, force_plus_);
+  system_ = f.massMatrix() - h * jacobian_velocity_ - (h * h) * jacobian_rotation_;
+  const ChainData& data = f.data();
+  for (int k = 0; k < n; ++k) velocity_.segment<3>(3 * k) = data.links.get(&LinkBlock::omega, k);
+  step_rhs_.noalias() = jacobian_rotation_ * velocity_;
+  step_rhs_ = h * (force_plus_ + h * step_rhs_);
+  lu_.compute(system_);
+  delta_.noalias() = lu_.solve(step_rhs_);
+  if (!delta_.allFinite()) return false;
+  // Forces along the cable and the powers, with the step's mean angular acceleration.
+  mean_rate_ = delta_ / h;
+  denseJointForces(f.model(), f.data(), mean_rate_);
+  const double damping_power = damperPower(f.model(), data);
+  const double input_power = data.joint_force.col(0).dot(ends.base_velocity) + data.coupling.dot(data.tip_velocity);
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3d omega = data.links.get(&LinkBlock::omega, k) + delta_.segment<3>(3 * k);
+    const Eigen::Vector3d axis = data.links.get(&LinkBlock::u, k);
+    const double angle = h * omega.norm();
+    Eigen::Vector3d turned = axis;
+    if (angle > 0.0) turned = Eigen::AngleAxisd(angle, omega.normalized()) * axis;
+    x.segment<3>(StateLayout::axis(k)) = turned;
+    x(StateLayout::twist(k)) += h * twistRate(omega, axis);
+    x.segment<3>(StateLayout::omega(k)) = omega;
+  }
+  x(StateLayout::dissipated(n)) -= h * (data.drag_power + data.added_mass_power + damping_power);
+  x(StateLayout::workInput(n)) += h * input_power;
+  return x.allFinite();
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,25 @@
+#include "cable_dynamics/simulation/time_schemes/time_scheme.h"
+
+#include "cable_dynamics/simulation/time_schemes/rk4.h"
+#include "cable_dynamics/simulation/time_schemes/semi_implicit.h"
+
+namespace cable_dynamics {
+
+bool TimeScheme::evaluateEnd(ChainDynamics& dynamics, const EndInputs& ends, const Eigen::VectorXd& x) {
+  // Schemes that reuse nothing evaluate only what the energy check reads.
+  double magnitude = 0.0;
+  dynamics.mechanicalEnergy(x, ends, magnitude);
+  return true;
+}
+
+std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links) {
+  switch (integrator) {
+    case Integrator::kRk4:
+      return std::make_unique<Rk4Scheme>(StateLayout::size(links));
+    case Integrator::kSemiImplicit:
+      return std::make_unique<SemiImplicitScheme>(links);
+  }
+  return nullptr;
+}
+
+}  // namespace cable_dynamics
