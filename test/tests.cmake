@@ -48,6 +48,10 @@ target_link_libraries(test_azimuth_tracker cable_dynamics_core ${GTEST_MAIN_LIBR
 catkin_add_gtest(test_simulator test/test_simulator.cpp)
 target_link_libraries(test_simulator cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
+catkin_add_gtest(test_step_check test/test_step_check.cpp)
+target_link_libraries(test_step_check cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_step_check PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
 # Multibody reference: MuJoCo from Debian (libmujoco-dev).
 # (Debian's mujocoConfig.cmake names /usr/include/libqhull_r, which the package does not install, so the
 # library and header are found directly.)
@@ -60,6 +64,8 @@ target_link_libraries(test_mujoco_reference cable_dynamics_core ${MUJOCO_LIBRARY
 cable_add_pytest(presets test/test_presets.py
   CABLE_SIM_BIN=$<TARGET_FILE:cable_sim> CABLE_MODEL_BIN=$<TARGET_FILE:cable_model>)
 add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim cable_model)
+cable_add_pytest(unreliable_runs test/test_unreliable_runs.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
+add_dependencies(run_tests_cable_dynamics_pytest_unreliable_runs cable_sim)
 
 # The node over ROS (rostest): test/node/node_tests.cmake.
 include(${CMAKE_CURRENT_LIST_DIR}/node/node_tests.cmake)

@@ -1,5 +1,6 @@
 #include "cable_dynamics/simulation/cable_simulator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -79,6 +80,9 @@ void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::Vector
   if (!q.allFinite() || !qd.allFinite()) throw std::invalid_argument("state has a non-finite value");
   dynamics_.stateFromPaper(q, qd, x_);
   start_balance_known_ = false;
+  drift_reference_known_ = false;
+  largest_scale_ = energy_drift_ = 0.0;
+  retried_steps_ = 0;
   scheme_->forget();
   // Continue azimuths from the given angles (straight-down links keep the azimuth they were given).
   Eigen::VectorXd psi(links());
@@ -119,6 +123,12 @@ bool CableSimulator::advance(double h) {
   if (judgeEnergy(before, after, limits_) != StepVerdict::kAccepted) return false;
   start_balance_ = after;
   start_balance_known_ = true;
+  if (!drift_reference_known_) {
+    drift_reference_ = before.value;
+    drift_reference_known_ = true;
+  }
+  largest_scale_ = std::max({largest_scale_, before.mechanical, after.mechanical, 1e-9});
+  energy_drift_ = std::max(energy_drift_, std::abs(after.value - drift_reference_) / largest_scale_);
   return true;
 }
 
@@ -131,6 +141,7 @@ StepReport CableSimulator::step() {
     for (int i = 0; i < pieces && ok; ++i) ok = advance(dt_ / pieces);
     if (ok) {
       report.substeps = pieces;
+      if (pieces > 1) ++retried_steps_;
       time_ = t0 + dt_;  // no drift from summing the pieces
       dynamics_.followAzimuths(x_);
       return report;
@@ -187,6 +198,7 @@ void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen:
 void CableSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
   ends_.setBaseTarget(position, velocity);
   start_balance_known_ = false;
+  drift_reference_known_ = false;
   scheme_->forget();
 }
 

@@ -89,6 +89,15 @@ class CableSimulator {
   /// External base position and velocity [m], [m/s]; replaces the configured motion until reset().
   void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
 
+  /// How far the energy balance has drifted since reset (schemes that balance energy: RK4), as a
+  /// fraction of the largest mechanical energy scale seen [-]; an unstable mode that the per-step
+  /// check lets through a little at a time shows here. Negative when not measured (semi-implicit).
+  /// Restarts from the present balance when an external base target moves the base (a jump in
+  /// potential energy that no work term records), keeping the largest drift so far.
+  double energyDrift() const { return scheme_->balancesEnergy() ? energy_drift_ : -1.0; }
+  /// Steps since reset that needed substeps.
+  long retriedSteps() const { return retried_steps_; }
+
   /// Largest stable RK4 time step estimated from the stiffest mode, with a factor 2 of margin [s]
   /// (stable_step.h).
   double estimateStableTimeStep() const { return estimateStableStep(params_, properties()).recommended; }
@@ -108,6 +117,12 @@ class CableSimulator {
   double time_ = 0.0;                   ///< [s]
   bool start_balance_known_ = false;    ///< start_balance_ is the present state's (nothing changed since)
   EnergyBalance start_balance_;
+  // Drift of the balance since reset (energyDrift()).
+  bool drift_reference_known_ = false;
+  double drift_reference_ = 0.0;        ///< the balance the drift is measured from [J]
+  double largest_scale_ = 0.0;          ///< the largest mechanical magnitude seen [J]
+  double energy_drift_ = 0.0;           ///< [-]
+  long retried_steps_ = 0;
   Eigen::VectorXd x_, x_start_;         ///< (StateLayout::size(n)) the state, and at the step's start
   Eigen::VectorXd q_, qd_;              ///< (3n) for messages
 };

@@ -1,0 +1,62 @@
+"""A run that is wrong must not look right (issue 11, items 7 and 8): cable_sim refuses a time step
+beyond RK4's reach at start, naming simulation.dt and the step the cable needs, instead of running
+with substeps and exiting 0. Before this, both commands below exited 0: the first after 13,528 of
+20,000 steps needed substeps, with the total energy drifting from -3579 J to -2814 J and sampled top
+tensions of 0.24 N and 88.7 N against about 95 N; the second reset 2,166 times in 25 s."""
+import os
+import re
+import subprocess
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+
+
+def run_sim(tmp_path, config, *sets, duration="2"):
+    binary = os.environ.get("CABLE_SIM_BIN")
+    if not binary:
+        pytest.fail("set CABLE_SIM_BIN to the built executable (scripts/test.sh does)")
+    cmd = [binary, "--config", os.path.join(REPO, "config", config), "--duration", duration,
+           "--output", str(tmp_path / "run.csv"), "--sample", "1"]
+    for s in sets:
+        cmd += ["--set", s]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+
+
+def step_limit(stderr):
+    """The largest dt the refusal names [s]."""
+    match = re.search(r"expected at most ([0-9.eE+-]+) s", stderr)
+    assert match, stderr
+    return float(match.group(1))
+
+
+def test_strong_joint_dampers_at_a_long_step_are_refused(tmp_path):
+    # The issue's command: bending model, elevation dampers of 2000 N m s/rad, dt = 1 ms.
+    done = run_sim(tmp_path, "default.yaml", "cable.stiffness.model=bending", "cable.damping.elevation=2000",
+                   duration="20")
+    assert done.returncode == 2, done.stderr
+    assert "simulation.dt" in done.stderr and "damper" in done.stderr, done.stderr
+    # The step it names is a real one: there the same cable runs with no substeps and a flat energy
+    # balance (cable_sim exits 5 otherwise, see below), and the tension is the hanging weight's.
+    limit = step_limit(done.stderr)
+    assert 1e-5 < limit < 1e-3
+    ok = run_sim(tmp_path, "default.yaml", "cable.stiffness.model=bending", "cable.damping.elevation=2000",
+                 f"simulation.dt={limit}", duration="2")
+    assert ok.returncode == 0, ok.stderr
+    assert "needed substeps" not in ok.stderr, ok.stderr
+
+
+def test_an_impossible_coupling_is_refused(tmp_path):
+    # load.coupling.stiffness = 1e9 N/m is in range, but at dt = 1 ms its mode is far beyond RK4.
+    for extra in (["load.coupling.stiffness=1e9"], ["load.coupling.stiffness=1e9", "load.coupling.damping=1e9"]):
+        done = run_sim(tmp_path, "demo_rov.yaml", *extra)
+        assert done.returncode == 2, done.stderr
+        assert "simulation.dt" in done.stderr and "coupling" in done.stderr, done.stderr
+
+
+def test_the_semi_implicit_integrator_is_not_refused(tmp_path):
+    # The refusal offers the semi-implicit integrator; it must then run.
+    done = run_sim(tmp_path, "default.yaml", "cable.stiffness.model=bending", "cable.damping.elevation=2000",
+                   "simulation.integrator=semi_implicit", "simulation.dt=0.01", "cable.links=10", duration="2")
+    assert done.returncode == 0, done.stderr
