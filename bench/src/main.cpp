@@ -67,7 +67,7 @@ struct Column {
   std::string name;
   bool is_project = false;     ///< cable_dynamics' step (the denominator of the ratios)
   bool is_derivative = false;  ///< ChainDynamics::derivative() rather than a step
-  std::string formulation;     ///< the project's columns: "" (no key), "paper" or "recursive"
+  std::string formulation;     ///< the project's columns: "paper" or "recursive"
   const Engine* engine = nullptr;
 };
 
@@ -208,7 +208,7 @@ int main(int argc, char** argv) {
   // --- the columns ---------------------------------------------------------------------------------
   const std::vector<std::string> formulations = projectFormulations();
   const std::vector<Engine> engine_list = engines();
-  const auto projectName = [](const std::string& f) { return f.empty() ? std::string("cable_dyn") : "cd:" + f; };
+  const auto projectName = [](const std::string& f) { return "cd:" + f; };
   std::vector<Column> all_columns;
   for (const auto& f : formulations) all_columns.push_back({projectName(f), true, false, f, nullptr});
   for (const auto& e : engine_list) all_columns.push_back({e.name, false, false, "", &e});
@@ -227,9 +227,7 @@ int main(int argc, char** argv) {
               "interleaved, median. CPU: %s; load average at start: %s\n",
               reps, firstLine("/proc/cpuinfo", "model name").c_str(), loadAverage().c_str());
   std::printf("cable_dynamics: %s\n",
-              formulations.size() == 1
-                  ? "one formulation (no simulation.formulation key yet): CableSimulator::step(), RK4"
-                  : "simulation.formulation=paper and =recursive side by side: CableSimulator::step(), RK4");
+              "simulation.formulation=paper and =recursive side by side: CableSimulator::step(), RK4");
   for (const auto& e : engine_list) std::printf("  %-8s %s\n", e.name.c_str(), e.how.c_str());
   std::printf("Per cell: >= %.2f s of timed steps per repetition; warm-up + %d repetitions <= %.0f s, else '-'.\n\n",
               options.target, reps, options.budget);

@@ -63,9 +63,9 @@ EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainModel& model, LinkBlocks& link
       block.own_moment.set(i, across * ((0.5 * l * l) * known) + c.third_moment[i] * beta - block.moment[i]);
       // omega x (I_rot omega) - tau, with I_rot = I_thick (I - u u^T) + I_P u u^T.
       const double gyroscopic = c.polar[i] - c.thick_transverse[i];
-      const Vec3 q = (gyroscopic * dot(u, omega)) * axis_rate - torque;
-      block.q1[i] = dot(e1, q);
-      block.q2[i] = dot(e2, q);
+      const Vec3 bias_torque = (gyroscopic * dot(u, omega)) * axis_rate - torque;
+      block.bias_torque1[i] = dot(e1, bias_torque);
+      block.bias_torque2[i] = dot(e2, bias_torque);
       // Spin: I_P (omega'.u) = tau.u, since a spherical joint passes no torque along the link.
       block.spin_acc[i] = c.inverse_polar[i] * dot(u, torque);
     }
@@ -108,10 +108,10 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
     const Symmetric3 m = {sum.xx - inv_det * z.xx, sum.xy - inv_det * z.xy, sum.xz - inv_det * z.xz,
                           sum.yy - inv_det * z.yy, sum.yz - inv_det * z.yz, sum.zz - inv_det * z.zz};
     const Vec3 x1 = inv_det * v1, x2 = inv_det * v2;
-    // Bias force: the link's own plus F_{k+1}; torque about joint k u x h + q with h the link's own
-    // first moment plus l F_{k+1}.
-    const Vec3 h = block.own_moment[i] + l * child_force;
-    const double g1 = block.q1[i] - dot(e2, h), g2 = block.q2[i] + dot(e1, h);
+    // Bias force: the link's own plus F_{k+1}; torque about joint k u x moment + bias torque, with
+    // `moment` the link's own first moment plus l F_{k+1} (MODEL.md section 4 calls them h and q).
+    const Vec3 moment = block.own_moment[i] + l * child_force;
+    const double g1 = block.bias_torque1[i] - dot(e2, moment), g2 = block.bias_torque2[i] + dot(e1, moment);
     const Vec3 force = block.own_force[i] + child_force - (g1 * x1 + g2 * x2);
     if (all_joint_forces) {  // for J_k = M_k d_k + F_k after the forward pass (J_0 = F_0 needs neither)
       block.mass.set(i, m);

@@ -105,7 +105,7 @@ struct alignas(64) LinkBlock {
   LanesSymmetric3 own_mass;   ///< l A, the link's translational inertia [kg]
   Lanes3 own_force;           ///< A (l a0 + l^2/2 beta) - F [N]
   Lanes3 own_moment;          ///< (m' + m_a') (l^2/2 a0 + l^3/3 beta) - first moment of F [N m]
-  double q1[kBlockLanes], q2[kBlockLanes];  ///< gyroscopic torque minus the joint torque on e1, e2 [N m]
+  double bias_torque1[kBlockLanes], bias_torque2[kBlockLanes];  ///< gyroscopic minus joint torque on e1, e2 [N m]
   double spin_acc[kBlockLanes];             ///< angular acceleration about u [rad/s^2]
   // The recursion's backward pass.
   Lanes3 x1, x2;              ///< transverse accelerations y = y_g - X^T a_k [1/m]
