@@ -93,8 +93,12 @@ cable: {links: 2, length: 1.0, diameter: 0.02, material_density: 1500.0}
 TEST(ConfigLoader, RigiditiesGiveJointSprings) {
   const CableParams p = loadConfigString(kMinimal, {"cable.stiffness={model: bending, bending_rigidity: 10.0, torsional_rigidity: 4.0}"});
   const auto props = cable_dynamics::deriveLinkProperties(p);
-  EXPECT_NEAR(props.stiffness_elevation(0), 10.0 / 2.0, 1e-12);
-  EXPECT_NEAR(props.stiffness_azimuth(0), 10.0 / 2.0, 1e-12);
+  // Joint 1 spans the half link from the clamp to link 1's centre (1 m), the others link centre to
+  // link centre (2 m): test_end_fixity holds this against closed forms.
+  EXPECT_NEAR(props.stiffness_elevation(0), 10.0 / 1.0, 1e-12);
+  EXPECT_NEAR(props.stiffness_azimuth(0), 10.0 / 1.0, 1e-12);
+  EXPECT_NEAR(props.stiffness_elevation(1), 10.0 / 2.0, 1e-12);
+  EXPECT_NEAR(props.stiffness_torsion(0), 4.0 / 1.0, 1e-12);
   EXPECT_NEAR(props.stiffness_torsion(3), 4.0 / 2.0, 1e-12);
   EXPECT_EQ(props.stiffness_model, cable_dynamics::StiffnessModel::kBending);
 }

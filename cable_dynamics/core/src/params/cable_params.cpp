@@ -24,9 +24,13 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
   p.submerged_mass = p.mass - params.fluid.density * section_area * p.length;
   p.added_mass_per_length = params.fluid.added_mass * params.fluid.density * section_area;
 
-  // Rigidities, when given, give per-joint springs k = EI / l_k (a beam of length l_k bent uniformly).
+  // Rigidities, when given, give per-joint springs k = EI / s_k, s_k the arc length the joint's bend is
+  // spread over: between the centres of the two links it joins, (l_{k-1} + l_k)/2, and for joint 1 from
+  // the clamp to link 1's centre, l_1/2. (A whole l_1 there makes the clamp first-order accurate: a
+  // cantilever's tip deflection off by about 2/n; docs/MODEL.md section 5.)
   const StiffnessParams& k = params.stiffness;
-  const Eigen::VectorXd inv_length = p.length.cwiseInverse();
+  Eigen::VectorXd inv_length(n);
+  for (int j = 0; j < n; ++j) inv_length(j) = 2.0 / (p.length(j) + (j > 0 ? p.length(j - 1) : 0.0));
   const auto springs = [&](double per_joint, double rigidity) -> Eigen::VectorXd {
     return rigidity > 0.0 ? Eigen::VectorXd(rigidity * inv_length) : Eigen::VectorXd::Constant(n, per_joint);
   };

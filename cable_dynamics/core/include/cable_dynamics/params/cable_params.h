@@ -46,9 +46,10 @@ struct StiffnessParams {
   double elevation = 0.0;  ///< [N m/rad]
   double azimuth = 0.0;    ///< [N m/rad]
   double torsion = 0.0;    ///< [N m/rad]
-  /// Bending rigidity EI [N m^2]; when > 0, elevation = azimuth = EI / l_k for joint k.
+  /// Bending rigidity EI [N m^2]; when > 0, elevation = azimuth = EI / s_k for joint k, s_k =
+  /// (l_{k-1} + l_k)/2 between link centres and l_1/2 from the clamp (cable_params.cpp).
   double bending_rigidity = 0.0;
-  /// Torsional rigidity GJ [N m^2]; when > 0, torsion = GJ / l_k for joint k.
+  /// Torsional rigidity GJ [N m^2]; when > 0, torsion = GJ / s_k (the same s_k).
   double torsional_rigidity = 0.0;
 };
 
