@@ -117,6 +117,16 @@ TEST(ChainDynamics, AgreesWithPaperModelWithBendingSprings) {
   for (unsigned seed = 1; seed <= 4; ++seed) expectSameAccelerations(p, seed);
 }
 
+TEST(ChainDynamics, AgreesWithPaperModelWithATiltedClampAndWithAPin) {
+  // The base clamp along a tilted direction: joint 1 bends and twists link 1 against it, in the
+  // dynamics (on link axes) and in ElasticJoints (on the paper angles, by automatic differentiation).
+  for (const char* base : {"base={direction: [0.3, -0.5, -0.8]}", "base={direction: [1, 0, 0]}", "base={fixity: pinned}"}) {
+    SCOPED_TRACE(base);
+    const CableParams p = makeParams(4, {"cable.stiffness={model: bending, elevation: 3.0, torsion: 0.5}", base});
+    for (unsigned seed = 1; seed <= 4; ++seed) expectSameAccelerations(p, seed);
+  }
+}
+
 TEST(ChainDynamics, RecursiveAndDenseFormulationsAgreeWithEveryForce) {
   // Fluid drag in a sheared current (drag point by point) and in a uniform one (drag by the uniform
   // shortcut), added mass, a moving base, springs, dampers and the load coupling. The two formulations

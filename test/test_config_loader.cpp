@@ -228,3 +228,24 @@ TEST(ConfigLoader, RejectsMalformedOverride) {
 TEST(ConfigLoader, MissingFileIsAConfigError) {
   EXPECT_THROW(loadConfigFile("/nonexistent/cable.yaml"), ConfigError);
 }
+
+TEST(ConfigLoader, BaseFixityAndClampDirection) {
+  const CableParams p = loadConfigString(kMinimal, {"cable.stiffness.model=bending", "base.direction=[0, 3, -4]"});
+  EXPECT_EQ(p.base.fixity, cable_dynamics::BaseFixity::kClamped);
+  EXPECT_NEAR(p.base.direction.y(), 0.6, 1e-15);  // normalized
+  const auto props = cable_dynamics::deriveLinkProperties(p);
+  EXPECT_NEAR(props.clamp_axis.y(), -0.6, 1e-15);  // paper frame: y and z flip
+  EXPECT_NEAR(props.clamp_axis.z(), 0.8, 1e-15);
+  const CableParams pinned = loadConfigString(
+      kMinimal, {"cable.stiffness={model: bending, bending_rigidity: 5.0}", "cable.damping.elevation=1", "base.fixity=pinned"});
+  const auto pinned_props = cable_dynamics::deriveLinkProperties(pinned);
+  EXPECT_EQ(pinned_props.stiffness_elevation(0), 0.0);  // a pin holds link 1 by a force alone
+  EXPECT_EQ(pinned_props.damping_elevation(0), 0.0);
+  EXPECT_GT(pinned_props.stiffness_elevation(1), 0.0);
+  expectRejected("base.fixity=welded", "base.fixity");
+  expectRejected("base.direction=[0, 0, 0]", "base.direction");
+  expectRejected("base.direction=[0, 1]", "base.direction");
+  // The paper's springs are measured from the vertical: neither a pin nor a tilted clamp applies.
+  expectRejected("base.fixity=pinned", "base.fixity");
+  expectRejected("base.direction=[1, 0, 0]", "base.direction");
+}

@@ -113,3 +113,85 @@ TEST(EndFixity, FixedFreeTorsionFrequencyConvergesAtSecondOrder) {
   EXPECT_GT(order(errors[1], errors[2]), 1.8);
   EXPECT_LT(std::abs(errors[2]), 0.005);
 }
+
+/// Every link along the paper frame's +x (elevation pi/2, absolute azimuth pi/2: the first joint's
+/// relative azimuth pi/2, the others 0), as config overrides.
+std::vector<std::string> horizontalStart(int n) {
+  std::string azimuths = "initial.azimuth=[1.5707963267948966";
+  for (int k = 1; k < n; ++k) azimuths += ", 0";
+  return {"initial.elevation=1.5707963267948966", azimuths + "]"};
+}
+
+TEST(EndFixity, HorizontalClampCarriesACantileverUnderGravity) {
+  // base.direction = [1, 0, 0]: the clamp holds link 1 horizontal (an I-tube), the cable in air sags
+  // under its weight w = m' g. Tip deflection against w L^4 / (8 EI), EI = 736 kN m^2 (1 cm; the tip
+  // turns by 1.3e-3 rad, so the geometry is linear to about 1e-6). Static shape from the semi-implicit
+  // integrator, whose numerical damping settles the motion in air (first mode 39 rad/s, dt = 10 ms).
+  const double ei = 7.36e5, w = kMassPerLength * 9.81;
+  const double exact = w * std::pow(kLength, 4) / (8.0 * ei);
+  std::vector<double> errors;
+  for (int n : {10, 20, 40}) {
+    std::vector<std::string> o = {"cable.stiffness={model: bending, bending_rigidity: 736000}", "fluid.density=0",
+                                  "base.direction=[1, 0, 0]", "simulation={integrator: semi_implicit, dt: 0.01}"};
+    for (const std::string& start : horizontalStart(n)) o.push_back(start);
+    CableSimulator sim(stiffCable(n, o));
+    for (int i = 0; i < 2000; ++i) ASSERT_TRUE(sim.step().ok);
+    SimulationSnapshot s;
+    sim.snapshot(s);
+    EXPECT_NEAR(s.chain.ends(0, n), kLength, 1e-3);  // still along +x
+    const double sag = s.chain.ends(2, n);            // paper z: down [m]
+    errors.push_back(sag / exact - 1.0);
+    std::cout << "horizontal clamp n = " << std::setw(2) << n << ": tip sag " << sag << " m, w L^4/(8 EI) = " << exact
+              << " m, error " << 100 * errors.back() << " %, top tension " << s.chain.tension(0) << " N\n";
+    // The clamp carries the weight: the base force is the cable's weight, straight down (paper +z).
+    EXPECT_NEAR(-s.chain.base_force.z(), -w * kLength, 1e-6 * w * kLength);
+  }
+  EXPECT_GT(order(errors[0], errors[1]), 1.8);
+  EXPECT_GT(order(errors[1], errors[2]), 1.8);
+  EXPECT_LT(std::abs(errors[2]), 0.005);
+}
+
+/// Mean period of the tip's paper-y coordinate (a link at azimuth 0 leans along y) [s], from its upward zero crossings over `duration`.
+double tipSwingPeriod(CableSimulator& sim, double duration) {
+  std::vector<double> crossings;
+  SimulationSnapshot s;
+  sim.snapshot(s);
+  double previous = s.chain.ends(1, sim.links()), previous_time = sim.time();
+  const long steps = std::lround(duration / sim.dt());
+  for (long i = 0; i < steps; ++i) {
+    EXPECT_TRUE(sim.step().ok);
+    sim.snapshot(s);
+    const double x = s.chain.ends(1, sim.links());
+    if (previous < 0.0 && x >= 0.0) crossings.push_back(previous_time + (sim.time() - previous_time) * (-previous) / (x - previous));
+    previous = x;
+    previous_time = sim.time();
+  }
+  EXPECT_GE(crossings.size(), 2u);
+  return crossings.size() < 2 ? 0.0 : (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
+TEST(EndFixity, PinnedBaseLetsAStiffCableSwingAsARod) {
+  // base.fixity: pinned leaves link 1 free to turn at the base: a stiff cable (EI = 1e5 N m^2, its
+  // first bending mode ~10 times faster than the swing) started straight at 0.05 rad from the
+  // vertical swings as a uniform rod pinned at its end, period 2 pi sqrt(2 L / (3 g)) (small amplitude:
+  // the theta^2/16 correction is 1.6e-4; the rod's flexibility and the links' thickness inertia add
+  // about 1e-3). Clamped, the same start bends it instead: it vibrates in its cantilever modes (the
+  // first at 1.875^2 sqrt(EI / (m' L^4)), a period of 0.44 s; a straight tilted start excites the
+  // higher ones too, so its tip crosses the vertical more often still), never swinging as a rod.
+  const int n = 20;
+  const double rod = 2.0 * M_PI * std::sqrt(2.0 * kLength / (3.0 * 9.81));
+  const double cantilever = 2.0 * M_PI / (1.875104 * 1.875104 * std::sqrt(1.0e5 / (kMassPerLength * std::pow(kLength, 4))));
+  const std::vector<std::string> common = {"cable.stiffness={model: bending, bending_rigidity: 1.0e5}", "fluid.density=0",
+                                           "initial.elevation=0.05", "simulation.dt=0.0001"};
+  std::vector<std::string> pinned = common, clamped = common;
+  pinned.push_back("base.fixity=pinned");
+  CableSimulator swing(stiffCable(n, pinned)), vibrate(stiffCable(n, clamped));
+  const double swing_period = tipSwingPeriod(swing, 12.0), vibration_period = tipSwingPeriod(vibrate, 2.0);
+  std::cout << "pinned: period " << swing_period << " s, rod 2 pi sqrt(2L/3g) = " << rod << " s (error "
+            << 100 * (swing_period / rod - 1) << " %); clamped: period " << vibration_period
+            << " s (cantilever mode 1 without gravity: " << cantilever << " s)\n";
+  EXPECT_NEAR(swing_period / rod, 1.0, 0.005);
+  EXPECT_GT(vibration_period, 0.0);
+  EXPECT_LT(vibration_period, cantilever * 1.05);  // no slower than the first bending mode: no swing
+
+}

@@ -53,11 +53,26 @@ inline void localIndices(int k, int idx[4]) {
   idx[3] = 3 * k + 2;
 }
 
-inline double localValue(const Eigen::VectorXd& q, int index) { return index >= 0 ? q(index) : 0.0; }
+/// Local variable i of joint k: for joint 1 the "previous link" is the base clamp (elevation te_c), and
+/// link 1's azimuth is taken relative to the clamp's psi_c (so that the twist is a + t - psi_c - Omega:
+/// the clamp frame's sigma is psi_c, as in LinkProperties::clamp_twist).
+inline double localValue(const Eigen::VectorXd& q, int k, int i, double clamp_elevation, double clamp_azimuth) {
+  if (k == 0 && i == 0) return clamp_elevation;
+  const double value = q(i == 0 ? 3 * (k - 1) : 3 * k + i - 1);
+  return k == 0 && i == 2 ? value - clamp_azimuth : value;
+}
 
 }  // namespace
 
-ElasticJoints::ElasticJoints(const LinkProperties& p) : n_(p.n), model_(p.stiffness_model) {
+double ElasticJoints::local(const Eigen::VectorXd& q, int k, int i) const {
+  return localValue(q, k, i, clamp_elevation_, clamp_azimuth_);
+}
+
+ElasticJoints::ElasticJoints(const LinkProperties& p)
+    : n_(p.n),
+      model_(p.stiffness_model),
+      clamp_elevation_(std::atan2(std::hypot(p.clamp_axis.x(), p.clamp_axis.y()), p.clamp_axis.z())),
+      clamp_azimuth_(p.clamp_twist) {
   k_diag_.resize(3 * n_);
   c_diag_.resize(3 * n_);
   for (int k = 0; k < n_; ++k) {
@@ -69,10 +84,8 @@ ElasticJoints::ElasticJoints(const LinkProperties& p) : n_(p.n), model_(p.stiffn
 double ElasticJoints::energy(const Eigen::VectorXd& q) const {
   if (model_ == StiffnessModel::kPaper) return 0.5 * q.dot(k_diag_.cwiseProduct(q));
   double v = 0.0;
-  int idx[4];
   for (int k = 0; k < n_; ++k) {
-    localIndices(k, idx);
-    v += jointEnergy(localValue(q, idx[0]), q(idx[1]), q(idx[2]), q(idx[3]), k_diag_(3 * k), k_diag_(3 * k + 2));
+    v += jointEnergy(local(q, k, 0), local(q, k, 1), local(q, k, 2), local(q, k, 3), k_diag_(3 * k), k_diag_(3 * k + 2));
   }
   return v;
 }
@@ -87,7 +100,7 @@ void ElasticJoints::force(const Eigen::VectorXd& q, Eigen::VectorXd& out) const 
   for (int k = 0; k < n_; ++k) {
     localIndices(k, idx);
     Ad1 x[4];
-    for (int i = 0; i < 4; ++i) x[i] = Ad1(localValue(q, idx[i]), 4, i);
+    for (int i = 0; i < 4; ++i) x[i] = Ad1(local(q, k, i), 4, i);
     const Ad1 v = jointEnergy(x[0], x[1], x[2], x[3], k_diag_(3 * k), k_diag_(3 * k + 2));
     for (int i = 0; i < 4; ++i) {
       if (idx[i] >= 0) out(idx[i]) += v.derivatives()(i);
@@ -109,7 +122,7 @@ void ElasticJoints::stiffness(const Eigen::VectorXd& q, Eigen::MatrixXd& out) co
       // Outer derivative seeds i; the value itself carries the inner seed i for the second derivative.
       Ad1Vec4 outer_seed = Ad1Vec4::Constant(Ad1(0.0, Vec4::Zero()));
       outer_seed(i) = Ad1(1.0, Vec4::Zero());
-      x[i] = Ad2(Ad1(localValue(q, idx[i]), 4, i), outer_seed);
+      x[i] = Ad2(Ad1(local(q, k, i), 4, i), outer_seed);
     }
     const Ad2 v = jointEnergy(x[0], x[1], x[2], x[3], k_diag_(3 * k), k_diag_(3 * k + 2));
     for (int i = 0; i < 4; ++i) {
@@ -126,10 +139,8 @@ void ElasticJoints::damping(Eigen::MatrixXd& out) const {
 }
 
 void ElasticJoints::bendAndTwist(const Eigen::VectorXd& q, int k, double& bend, double& twist) const {
-  int idx[4];
-  localIndices(k, idx);
   double bend_squared = 0.0;
-  bendTwist(localValue(q, idx[0]), q(idx[1]), q(idx[2]), q(idx[3]), bend_squared, twist);
+  bendTwist(local(q, k, 0), local(q, k, 1), local(q, k, 2), local(q, k, 3), bend_squared, twist);
   bend = std::sqrt(std::max(0.0, bend_squared));
 }
 

@@ -46,15 +46,15 @@ void paperSpringTorques(const ChainModel& model, ChainData& data, const Eigen::V
   }
 }
 
-/// Joint k couples link k-1 (the fixed base direction, straight down, for k = 0) and link k.
+/// Joint k couples link k-1 (the base's clamp, LinkProperties::clamp_axis, for k = 0) and link k.
 void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
   const LinkProperties& p = model.properties();
   const LinkBlocks& links = data.links;
   for (int k = 0; k < model.links(); ++k) {
-    const Eigen::Vector3d prev = k > 0 ? links.get(&LinkBlock::u, k - 1) : kDown;
+    const Eigen::Vector3d prev = k > 0 ? links.get(&LinkBlock::u, k - 1) : p.clamp_axis;
     const Eigen::Vector3d axis = links.get(&LinkBlock::u, k);
     const JointGeometry g =
-        jointGeometry(prev, axis, x(StateLayout::twist(k)), k > 0 ? x(StateLayout::twist(k - 1)) : 0.0);
+        jointGeometry(prev, axis, x(StateLayout::twist(k)), k > 0 ? x(StateLayout::twist(k - 1)) : p.clamp_twist);
     // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
     const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * bendOverSine(g.bend, g.sine) * g.cross;
     // Twist: a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
@@ -117,9 +117,9 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
   }
   const LinkBlocks& links = data.links;
   for (int k = 0; k < model.links(); ++k) {
-    const Eigen::Vector3d prev = k > 0 ? links.get(&LinkBlock::u, k - 1) : kDown;
+    const Eigen::Vector3d prev = k > 0 ? links.get(&LinkBlock::u, k - 1) : p.clamp_axis;
     const JointGeometry g = jointGeometry(prev, links.get(&LinkBlock::u, k), x(StateLayout::twist(k)),
-                                          k > 0 ? x(StateLayout::twist(k - 1)) : 0.0);
+                                          k > 0 ? x(StateLayout::twist(k - 1)) : p.clamp_twist);
     energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
   }
   return energy;

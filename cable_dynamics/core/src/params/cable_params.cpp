@@ -40,6 +40,16 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
   p.damping_elevation = Eigen::VectorXd::Constant(n, params.damping.elevation);
   p.damping_azimuth = Eigen::VectorXd::Constant(n, params.damping.azimuth);
   p.damping_torsion = Eigen::VectorXd::Constant(n, params.damping.torsion);
+  // The base: a pin holds link 1 by a force alone; a clamp along base.direction (world) by joint 1.
+  if (params.base.fixity == BaseFixity::kPinned) {
+    for (Eigen::VectorXd* v : {&p.stiffness_elevation, &p.stiffness_azimuth, &p.stiffness_torsion, &p.damping_elevation,
+                               &p.damping_azimuth, &p.damping_torsion}) {
+      (*v)(0) = 0.0;
+    }
+  }
+  const Eigen::Vector3d& d = params.base.direction;  // world, z up
+  p.clamp_axis = Eigen::Vector3d(d.x(), -d.y(), -d.z()).normalized();  // paper frame, z down
+  p.clamp_twist = std::hypot(p.clamp_axis.x(), p.clamp_axis.y()) > 1e-12 ? std::atan2(p.clamp_axis.x(), p.clamp_axis.y()) : 0.0;
 
   p.load_mass = params.load.mass;
   p.load_submerged_mass = params.load.mass - params.fluid.density * params.load.volume;

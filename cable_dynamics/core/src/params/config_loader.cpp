@@ -145,6 +145,16 @@ CableParams parseConfig(const YAML::Node& root) {
   parseLoad(top.sub("load"), p);
   Section base = top.sub("base");
   p.base.motion = parseMotion(base.sub("motion"));
+  p.base.fixity = base.choice("fixity", "clamped", {"clamped", "pinned"}) == "clamped" ? BaseFixity::kClamped
+                                                                                       : BaseFixity::kPinned;
+  if (base.has("direction")) {
+    const std::vector<double> d = base.numberList("direction", 3, -1e3, 1e3, false, "");
+    p.base.direction = Eigen::Vector3d(d[0], d[1], d[2]);
+    if (p.base.direction.norm() < 1e-9) {
+      throw ConfigError("base.direction", describeNode(base.raw("direction")), "a non-zero vector (world frame)");
+    }
+    p.base.direction.normalize();
+  }
   base.rejectUnknownKeys();
   parseFluid(top.sub("fluid"), p);
   p.gravity = top.number("gravity", 9.81, 0.0, 100.0, false, "m/s^2");
@@ -166,6 +176,14 @@ CableParams parseConfig(const YAML::Node& root) {
                                  : Formulation::kPaper;
   simulation.rejectUnknownKeys();
   top.rejectUnknownKeys();
+  // The paper's springs act on absolute angles measured from the vertical: a clamp direction or a pin
+  // has no meaning for them.
+  const bool default_base = p.base.fixity == BaseFixity::kClamped && (p.base.direction + Eigen::Vector3d::UnitZ()).norm() < 1e-12;
+  if (p.stiffness.model == StiffnessModel::kPaper && !default_base) {
+    throw ConfigError(p.base.fixity == BaseFixity::kPinned ? "base.fixity" : "base.direction",
+                      p.base.fixity == BaseFixity::kPinned ? "pinned" : "not straight down",
+                      "the default (clamped, [0, 0, -1]) with cable.stiffness.model: paper; use model: bending");
+  }
   return p;
 }
 

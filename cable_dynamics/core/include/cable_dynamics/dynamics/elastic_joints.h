@@ -13,7 +13,7 @@ namespace cable_dynamics {
 /// and its Hessian (the tangent stiffness K), plus the joint damping matrix D.
 ///
 /// - Paper model: V_e = 1/2 q^T K q with K = diag(k_e, k_a, k_t) per joint.
-/// - Bending model: for joint k between link k-1 (the base direction, straight down, for k = 1) and
+/// - Bending model: for joint k between link k-1 (the base clamp, LinkProperties::clamp_axis, for k = 1) and
 ///   link k, V_e = 1/2 k_b beta_k^2 + 1/2 k_t tau_k^2, with beta_k the angle between the two link axes
 ///   and tau_k the twist of link k relative to link k-1 carried over by parallel transport (the discrete
 ///   rod twist). k_b is the elevation spring, k_t the torsion spring. Both are invariant to a rigid
@@ -43,6 +43,11 @@ class ElasticJoints {
   StiffnessModel model_;
   Eigen::VectorXd k_diag_;  ///< (3n) paper springs in coordinate order [N m/rad]
   Eigen::VectorXd c_diag_;  ///< (3n) dampers in coordinate order [N m s/rad]
+  double clamp_elevation_;  ///< of the base clamp's axis [rad]
+  double clamp_azimuth_;    ///< of the base clamp's axis [rad]
+
+  /// Local variable i (te_prev, te, a, t) of joint k, with the clamp standing in for link 0.
+  double local(const Eigen::VectorXd& q, int k, int i) const;
 };
 
 }  // namespace cable_dynamics

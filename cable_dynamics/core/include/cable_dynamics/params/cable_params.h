@@ -33,6 +33,12 @@ enum class Formulation {
 const char* integratorName(Integrator integrator);
 const char* formulationName(Formulation formulation);
 
+/// How the base holds the first link (the bending model's joint 1).
+enum class BaseFixity {
+  kClamped,  ///< along base.direction: joint 1's springs act against the clamp
+  kPinned,   ///< free to rotate: no spring or damper at joint 1
+};
+
 /// How the terminal load is held (used by the simulator).
 enum class LoadMode {
   kFree,      ///< the load hangs at the tip, moved only by the cable and the fluid
@@ -84,6 +90,12 @@ struct LoadParams {
 /// The cable's base (vessel, cage or fixed point).
 struct BaseParams {
   MotionParams motion;  ///< prescribed motion of the base relative to its initial position
+  /// How the base holds link 1 (bending model): clamped along `direction` (joint 1's bend and twist
+  /// springs and dampers act against the clamp), or pinned (free to rotate: joint 1 has none).
+  BaseFixity fixity = BaseFixity::kClamped;
+  /// Clamp direction, world frame (z up), unit [-]: straight down by default; an I-tube or a bend
+  /// stiffener angle otherwise.
+  Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ();
 };
 
 /// The surrounding fluid.
@@ -154,6 +166,11 @@ struct LinkProperties {
   double load_submerged_mass = 0.0;    ///< [kg]
   double gravity = 9.81;               ///< [m/s^2]
   StiffnessModel stiffness_model = StiffnessModel::kPaper;
+  /// The base clamp's axis in the paper frame (z down), unit [-], and its twist about the vertical,
+  /// sigma = psi of the clamp direction [rad]: joint 1 of the bending model bends and twists link 1
+  /// against this frame. (A pinned base has no springs or dampers at joint 1 instead.)
+  Eigen::Vector3d clamp_axis = Eigen::Vector3d::UnitZ();
+  double clamp_twist = 0.0;
 };
 
 /// Derives the per-link quantities; `params` must already be valid (see config_loader.h).
