@@ -44,6 +44,7 @@ EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainModel& model, LinkBlocks& link
   for (int b = 0; b < links.blocks(); ++b) {
     const LinkConstants& c = model.block(b);
     LinkBlock& block = links.block(b);
+    CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       const Vec3 u = block.u[i], beta = block.beta[i], omega = block.omega[i], torque = block.torque[i];
       const Vec3 axis_rate = block.axis_rate[i], known = block.known_acc[i];
@@ -138,6 +139,7 @@ EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links)
     const LinkConstants& c = model.block(b);
     LinkBlock& block = links.block(b);
     Lanes3 row_x, row_y, row_z, offset;  // T_k's rows and c_k
+    CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       const double l = c.length[i];
       const Vec3 p = l * block.e1[i], r = l * block.e2[i], x1 = block.x1[i], x2 = block.x2[i];
@@ -162,6 +164,7 @@ EIGEN_ALWAYS_INLINE double accelerationPass(const ChainModel& model, LinkBlocks&
   for (int b = 0; b < links.blocks(); ++b) {
     const LinkConstants& c = model.block(b);
     LinkBlock& block = links.block(b);
+    CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       const Vec3 delta = block.delta_acc[i], e1 = block.e1[i], e2 = block.e2[i], u = block.u[i];
       const double y1 = block.y1[i] - dot(block.x1[i], delta), y2 = block.y2[i] - dot(block.x2[i], delta);

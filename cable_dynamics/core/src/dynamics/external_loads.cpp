@@ -17,6 +17,7 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
     const LinkConstants& constants = model.block(b);
     LinkBlock& block = data.links.block(b);
     // Submerged weight, uniform along the link: total and first moment about the base end.
+    CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       block.force.set(i, {0.0, 0.0, constants.weight[i]});
       block.moment.set(i, {0.0, 0.0, 0.5 * constants.length[i] * constants.weight[i]});

@@ -16,6 +16,16 @@ namespace cable_dynamics {
 
 constexpr int kBlockLanes = 8;
 
+/// Before a loop over a block's lanes that reads a LinkConstants block and writes a LinkBlock: the two
+/// are separate objects (the model's and the data's), which the compiler cannot prove apart, so without
+/// it GCC leaves such loops scalar (measured: 1.5x slower steps). The lanes of one loop never depend on
+/// each other.
+#if defined(__GNUC__) && !defined(__clang__)
+#define CABLE_LANE_LOOP _Pragma("GCC ivdep")
+#else
+#define CABLE_LANE_LOOP
+#endif
+
 /// A 3-vector of three plain doubles, for the lane loops: Eigen's fixed-size vectors use their own
 /// two-wide packets, which keep the compiler from vectorizing across links.
 struct Vec3 {
