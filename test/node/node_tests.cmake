@@ -13,3 +13,14 @@ foreach(script test_bad_config.py test_sim_time.py)
     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
 endforeach()
 
+
+# Hostile inputs (issue 11): huge positions, first poses, jumps and stamps, re-acquisition, reset ranges,
+# divergence recovery; a second cable whose steps need substeps.
+add_rostest_gtest(test_hostile_inputs test/hostile_inputs.test test/node/test_hostile_inputs.cpp)
+target_include_directories(test_hostile_inputs PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
+target_link_libraries(test_hostile_inputs ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+add_dependencies(test_hostile_inputs cable_msgs_generate_messages_cpp cable_dynamics_node)
+
+# The node's ROS-light parts (guard, tracker, clock, builders' checks, options), no roscore.
+catkin_add_gtest(test_node_parts test/node/test_node_parts.cpp)
+target_link_libraries(test_node_parts cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})

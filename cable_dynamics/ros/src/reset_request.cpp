@@ -12,7 +12,6 @@ double positionLimit(int index) { return index % 3 == 2 ? 1e3 : M_PI; }
 std::string refusal(const char* array, int i, const CableFrameNames& names, double value, double limit,
                     const char* unit) {
   std::ostringstream s;
-  s.precision(17);
   s << array << "[" << i << "] (" << names.joint(i) << ") = " << value << ": expected a finite number in [" << -limit
     << ", " << limit << "] [" << unit << "]";
   return s.str();
