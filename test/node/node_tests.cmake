@@ -24,3 +24,9 @@ add_dependencies(test_hostile_inputs cable_msgs_generate_messages_cpp cable_dyna
 # The node's ROS-light parts (guard, tracker, clock, builders' checks, options), no roscore.
 catkin_add_gtest(test_node_parts test/node/test_node_parts.cpp)
 target_link_libraries(test_node_parts cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})
+
+# Fuzz: 100,000 hostile messages, counters compared exactly, every output checked.
+add_rostest_gtest(test_fuzz_inputs test/fuzz_inputs.test test/node/test_fuzz_inputs.cpp)
+target_include_directories(test_fuzz_inputs PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
+target_link_libraries(test_fuzz_inputs ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+add_dependencies(test_fuzz_inputs cable_msgs_generate_messages_cpp cable_dynamics_node)

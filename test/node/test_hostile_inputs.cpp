@@ -72,15 +72,16 @@ class HostileInputs : public ::testing::Test {
   }
 };
 
-// Item 1. Starting commit: the base pose was accepted and cable_state.potential_energy was -inf from then
-// on (the non-finite check of the published outputs failed).
+// Item 1. Starting commit (with the present core): the base pose was accepted, not counted, and made the
+// next step diverge (the cable was reset); the issue's -inf potential energy came from an older core.
 TEST_F(HostileInputs, HugePositionsAreRejectedAndNothingNonFiniteIsPublished) {
-  const unsigned rejected = out->state.rejected_inputs;
+  const unsigned rejected = out->state.rejected_inputs, diverged = out->state.diverged_steps;
   send(base, pose(Eigen::Vector3d(1e308, 1e308, -1e308), ros::Time::now()));
   send(base, pose(Eigen::Vector3d(2e6, 0.0, 0.0), ros::Time::now()));  // beyond |p| <= 1e6 m
   settle(sent);
   spinFor(1.0);
   EXPECT_EQ(out->state.rejected_inputs, rejected + 2);
+  EXPECT_EQ(out->state.diverged_steps, diverged) << "a rejected input reached the simulator";
   EXPECT_TRUE(std::isfinite(out->state.potential_energy)) << out->state.potential_energy;
   EXPECT_EQ(out->non_finite, "") << "a non-finite number was published";
 }
