@@ -7,8 +7,12 @@ target_link_libraries(test_cable_node ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 add_dependencies(test_cable_node cable_msgs_generate_messages_cpp cable_dynamics_node)
 add_rostest(test/bad_config.test DEPENDENCIES cable_dynamics_node)
 add_rostest(test/sim_time.test DEPENDENCIES cable_dynamics_node)
+# Issue 11: log throttling (item 3), the launch file (item 5), catch-up bounded by wall time (item 6).
+add_rostest(test/log_flood.test DEPENDENCIES cable_dynamics_node)
+add_rostest(test/launch_file.test DEPENDENCIES cable_dynamics_node)
+add_rostest(test/catch_up.test DEPENDENCIES cable_dynamics_node)
 # rostest finds the Python test nodes of this package in the devel space through these links.
-foreach(script test_bad_config.py test_sim_time.py)
+foreach(script test_bad_config.py test_sim_time.py test_log_flood.py test_launch_file.py test_catch_up.py)
   execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
 endforeach()
