@@ -11,7 +11,7 @@ import rosunit
 from cable_msgs.msg import CableState
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 
-MAX_LAG = 1.0  # ros.max_lag of slow_test.yaml [s]
+MAX_LAG = 1.0  # ros.max_lag, its default in slow_test.yaml [s]
 
 
 class CatchUp(unittest.TestCase):
