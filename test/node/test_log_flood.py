@@ -51,6 +51,7 @@ class LogFlood(unittest.TestCase):
             node.terminate()
             output, _ = node.communicate(timeout=20)
         lines = [line for line in output.splitlines() if line.strip()]
+        print("log flood: %d messages in bad frames, %d lines of node output" % (len(BAD_FRAMES) * PER_FRAME, len(lines)))
         self.assertLessEqual(len(lines), MAX_LINES, "%d lines:\n%s" % (len(lines), "\n".join(lines[:20])))
 
 

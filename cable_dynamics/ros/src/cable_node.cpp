@@ -9,6 +9,7 @@
 #include "cable_dynamics/dynamics/paper_model.h"
 #include "cable_dynamics/ros/cycle_stepper.h"
 #include "cable_dynamics/ros/finite_messages.h"
+#include "cable_dynamics/ros/input_log.h"
 #include "cable_dynamics/ros/reset_request.h"
 
 namespace cable_dynamics {
@@ -19,7 +20,7 @@ namespace {
 constexpr uint32_t kInputQueueSize = 1000;
 /// Share of a cycle's period that stepping may take; the rest is for publishing [-].
 constexpr double kSteppingShare = 0.8;
-/// Seconds between two log lines of one kind on a per-message path.
+/// Seconds between two log lines of one kind (divergence, dropped time).
 constexpr double kLogPeriod = 5.0;
 
 const char* loadModeName(LoadMode mode) {
@@ -86,52 +87,11 @@ bool CableNode::resolveFrame(const std::string& frame, Eigen::Isometry3d& world_
   return true;
 }
 
-void CableNode::logRefusal(const char* topic, InputVerdict verdict) const {
-  const InputCounters& c = guard_->counters();
-  // One throttled call site per reason: a flood of one kind of bad input gives one line per period.
-  switch (verdict) {
-    case InputVerdict::kNonFinite:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s: ignored (%u rejected so far)", topic, describe(verdict),
-                        c.rejected);
-      break;
-    case InputVerdict::kOutOfRange:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s (|position| <= %g m, |current| <= %g m/s): ignored (%u "
-                        "rejected so far)", topic, describe(verdict), kMaxInputPosition, kMaxCurrentSpeed, c.rejected);
-      break;
-    case InputVerdict::kBadFrame:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s '%s' (frame names have no leading '/'): ignored (%u "
-                        "rejected so far)", topic, describe(verdict), options_.world_frame.c_str(), c.rejected);
-      break;
-    case InputVerdict::kStale:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s (more than %.3f s before or after now): ignored (%u stale "
-                        "so far)", topic, describe(verdict), options_.input_timeout, c.stale);
-      break;
-    case InputVerdict::kOutOfOrder:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s: ignored (%u rejected so far)", topic, describe(verdict),
-                        c.rejected);
-      break;
-    case InputVerdict::kImplausible:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s: ignored (%u rejected so far)", topic, describe(verdict),
-                        c.rejected);
-      break;
-    case InputVerdict::kJump:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s (%g m/s): ignored (%u rejected so far)", topic,
-                        describe(verdict), kMaxInputSpeed, c.rejected);
-      break;
-    case InputVerdict::kAccepted:
-      break;
-    case InputVerdict::kReacquired:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s: %d consistent poses away from the tracked one: following "
-                        "the new stream", topic, kReacquireAfter);
-      break;
-  }
-}
-
 void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   Eigen::Vector3d position, velocity;
   const InputVerdict verdict =
       guard_->pose(InputGuard::kRovPose, *msg, ros::Time::now(), resolver_, position, velocity);
-  logRefusal("rov_pose", verdict);
+  logInput("rov_pose", verdict, guard_->counters(), options_);
   if (!isAccepted(verdict)) return;
   sim_->setLoadTarget(position - options_.base_position, velocity);
   if (params_.load.mode == LoadMode::kFree) {
@@ -143,14 +103,14 @@ void CableNode::onBasePose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   Eigen::Vector3d position, velocity;
   const InputVerdict verdict =
       guard_->pose(InputGuard::kBasePose, *msg, ros::Time::now(), resolver_, position, velocity);
-  logRefusal("base_pose", verdict);
+  logInput("base_pose", verdict, guard_->counters(), options_);
   if (isAccepted(verdict)) sim_->setBaseTarget(position - options_.base_position, velocity);
 }
 
 void CableNode::onCurrent(const geometry_msgs::TwistStamped::ConstPtr& msg) {
   Eigen::Vector3d current;
   const InputVerdict verdict = guard_->current(*msg, ros::Time::now(), resolver_, current);
-  logRefusal("current", verdict);
+  logInput("current", verdict, guard_->counters(), options_);
   if (isAccepted(verdict)) sim_->setCurrent(current);
 }
 

@@ -46,8 +46,6 @@ class CableNode {
 
   /// tf2 lookup of a frame in the world frame, without waiting and without tf2's own warnings.
   bool resolveFrame(const std::string& frame, Eigen::Isometry3d& world_from_frame);
-  /// Logs a refused input (throttled, one line per reason at most every 5 s).
-  void logRefusal(const char* topic, InputVerdict verdict) const;
   /// Reads the present state and publishes every output stamped `stamp`; on a non-finite state recovers
   /// the simulator and publishes nothing.
   void publishOutputs(const ros::Time& stamp);
