@@ -30,6 +30,9 @@ class CatchUp(unittest.TestCase):
         time.sleep(4.0)
         end_wall, end_state = time.time(), states[-1][1]
         rate = (len(states) - first) / (end_wall - start_wall)
+        measured_rtf = (end_state.sim_time - start_state.sim_time) / (end_wall - start_wall)
+        print("catch-up: cable_state at %.1f Hz, real-time factor measured %.3f, reported %.3f, lag %.3f s" %
+              (rate, measured_rtf, end_state.real_time_factor, end_state.lag))
         self.assertGreater(rate, 50.0, "cable_state at %.1f Hz" % rate)
         # Honest timing: simulated seconds per wall second, measured here, against what the node reports.
         measured = (end_state.sim_time - start_state.sim_time) / (end_wall - start_wall)
