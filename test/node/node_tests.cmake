@@ -7,9 +7,30 @@ target_link_libraries(test_cable_node ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 add_dependencies(test_cable_node cable_msgs_generate_messages_cpp cable_dynamics_node)
 add_rostest(test/bad_config.test DEPENDENCIES cable_dynamics_node)
 add_rostest(test/sim_time.test DEPENDENCIES cable_dynamics_node)
+# Issue 11: log throttling (item 3), the launch file (item 5), catch-up bounded by wall time (item 6).
+add_rostest(test/log_flood.test DEPENDENCIES cable_dynamics_node)
+add_rostest(test/launch_file.test DEPENDENCIES cable_dynamics_node)
+add_rostest(test/catch_up.test DEPENDENCIES cable_dynamics_node)
 # rostest finds the Python test nodes of this package in the devel space through these links.
-foreach(script test_bad_config.py test_sim_time.py)
+foreach(script test_bad_config.py test_sim_time.py test_log_flood.py test_launch_file.py test_catch_up.py)
   execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
 endforeach()
 
+
+# Hostile inputs (issue 11): huge positions, first poses, jumps and stamps, re-acquisition, reset ranges,
+# divergence recovery; a second cable whose steps need substeps.
+add_rostest_gtest(test_hostile_inputs test/hostile_inputs.test test/node/test_hostile_inputs.cpp)
+target_include_directories(test_hostile_inputs PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
+target_link_libraries(test_hostile_inputs ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+add_dependencies(test_hostile_inputs cable_msgs_generate_messages_cpp cable_dynamics_node)
+
+# The node's ROS-light parts (guard, tracker, clock, builders' checks, options), no roscore.
+catkin_add_gtest(test_node_parts test/node/test_node_parts.cpp)
+target_link_libraries(test_node_parts cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})
+
+# Fuzz: 100,000 hostile messages, counters compared exactly, every output checked.
+add_rostest_gtest(test_fuzz_inputs test/fuzz_inputs.test test/node/test_fuzz_inputs.cpp)
+target_include_directories(test_fuzz_inputs PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
+target_link_libraries(test_fuzz_inputs ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+add_dependencies(test_fuzz_inputs cable_msgs_generate_messages_cpp cable_dynamics_node)

@@ -1,40 +1,38 @@
 #pragma once
 /// \file
-/// \brief The ROS adapter: parameters in, simulation stepped from a timer, topics, TF, markers,
-///        diagnostics and services out. All physics lives in the ROS-free core.
+/// \brief The ROS adapter's I/O: parameters in, subscriptions through the input guard, a timer that steps
+///        the simulator on the node's clock, the messages published, the services. The physics lives in the
+///        ROS-free core; the checks, the clock and the message filling live in their own files.
 
 #include <memory>
-#include <string>
-#include <vector>
 
-#include <cable_msgs/CableState.h>
 #include <cable_msgs/GetModel.h>
 #include <cable_msgs/Reset.h>
 #include <cable_msgs/SetPaused.h>
 #include <geometry_msgs/PoseStamped.h>
-#include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/TwistStamped.h>
-#include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
-#include <sensor_msgs/JointState.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
-#include <visualization_msgs/MarkerArray.h>
 
+#include "cable_dynamics/dynamics/elastic_joints.h"
+#include "cable_dynamics/ros/input_guard.h"
+#include "cable_dynamics/ros/message_builders.h"
+#include "cable_dynamics/ros/node_options.h"
+#include "cable_dynamics/ros/output_source.h"
+#include "cable_dynamics/ros/rate_window.h"
+#include "cable_dynamics/ros/sim_clock.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/urdf/cable_urdf.h"
-#include "cable_dynamics/dynamics/elastic_joints.h"
-#include "cable_dynamics/simulation/link_frames.h"
-#include "cable_dynamics/ros/node_options.h"
 
 namespace cable_dynamics {
 
 /// One simulated cable in one namespace.
 class CableNode {
  public:
-  /// Reads and validates parameters (throws ConfigError / std::invalid_argument naming the key), sets
-  /// up topics, services, the URDF parameter and the timer.
+  /// Reads and validates parameters (throws ConfigError / std::invalid_argument naming the key), sets up
+  /// topics, services, the URDF parameter and the timer.
   CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:
@@ -46,17 +44,15 @@ class CableNode {
   bool onGetModel(cable_msgs::GetModel::Request& req, cable_msgs::GetModel::Response& res);
   bool onSetPaused(cable_msgs::SetPaused::Request& req, cable_msgs::SetPaused::Response& res);
 
-  /// Checks stamp and frame of an input and gives its position in the world frame. Counts and logs
-  /// rejections.
-  bool acceptPose(const geometry_msgs::PoseStamped& msg, const char* topic, Eigen::Vector3d& world_position);
-  bool fresh(const ros::Time& stamp, const char* topic);
-  /// acceptPose, then a jump check and the velocity estimate; updates `tracked` when accepted.
-  struct TrackedPose;
-  bool trackPose(const geometry_msgs::PoseStamped& msg, const char* topic, TrackedPose& tracked);
-  void publish(const ros::Time& stamp, double step_seconds);
-  void publishDiagnostics(const ros::Time& stamp);
-  void prepareMessages();
-  void resynchronize();
+  /// tf2 lookup of a frame in the world frame, without waiting and without tf2's own warnings.
+  bool resolveFrame(const std::string& frame, Eigen::Isometry3d& world_from_frame);
+  /// Reads the present state and publishes every output stamped `stamp`; on a non-finite state recovers
+  /// the simulator and publishes nothing.
+  void publishOutputs(const ros::Time& stamp);
+  /// After the simulator's time was set back to 0 (reset service).
+  void restartClock();
+  /// Counts a divergence and recovers the simulator (initial shape; time and inputs carry on).
+  void recoverFromDivergence(const std::string& why);
 
   ros::NodeHandle nh_, private_nh_;
   CableParams params_;
@@ -64,6 +60,8 @@ class CableNode {
   CableFrameNames names_;
   std::unique_ptr<CableSimulator> sim_;
   std::unique_ptr<ElasticJoints> joints_;
+  std::unique_ptr<InputGuard> guard_;
+  FrameResolver resolver_;
 
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
@@ -73,36 +71,15 @@ class CableNode {
   ros::ServiceServer reset_srv_, model_srv_, pause_srv_;
   ros::Timer timer_;
 
-  // Preallocated outputs, written by index every cycle.
-  sensor_msgs::JointState joint_msg_;
-  cable_msgs::CableState state_msg_;
-  visualization_msgs::MarkerArray marker_msg_;
-  geometry_msgs::WrenchStamped wrench_msg_;
-  std::vector<geometry_msgs::TransformStamped> transforms_;
-  SimulationSnapshot snapshot_;
-  PoseVector link_poses_, after_z_, after_x_;
-  Eigen::VectorXd alpha_hint_, effort_;
-
-  // Time keeping: simulated seconds since the last reset, against the ROS clock (wall or /clock).
-  bool started_ = false, paused_ = false;
-  ros::Time start_stamp_;
-  long steps_done_ = 0;
-  double lag_ = 0.0, real_time_factor_ = 0.0, step_seconds_ = 0.0, max_tension_seen_ = 1.0;
-  ros::WallTime rate_window_start_;
-  long rate_window_steps_ = 0, rate_window_cycles_ = 0;
-  double loop_rate_ = 0.0;
-  ros::Time last_diagnostics_, last_publish_;
-
-  // Inputs: the last accepted pose of the ROV and of the base (world frame), and their velocity
-  // estimated from successive poses.
-  struct TrackedPose {
-    bool valid = false;
-    Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< [m]
-    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< [m/s]
-    ros::Time stamp;
-  };
-  TrackedPose rov_, base_;
-  unsigned rejected_ = 0, stale_ = 0, diverged_ = 0;
+  CableOutputs outputs_;  ///< preallocated, written by index every cycle
+  OutputSource source_;
+  NodeStatus status_;
+  SimClock clock_;
+  RateWindow window_;
+  ros::Time last_now_, last_stamp_, last_diagnostics_;
+  double max_tension_seen_ = 1.0;  ///< [N], colour scale when ros.tension_scale is 0
+  unsigned diverged_at_diagnostics_ = 0;
+  double dropped_at_diagnostics_ = 0.0;
 };
 
 }  // namespace cable_dynamics

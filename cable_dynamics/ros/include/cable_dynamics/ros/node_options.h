@@ -1,31 +1,38 @@
 #pragma once
 /// \file
 /// \brief The node's parameters: the cable config (same keys as the YAML files) and the `ros` section,
-///        read from the private namespace and validated.
+///        read from the private namespace and validated by the same ConfigSection checks.
 
 #include <string>
 
 #include <Eigen/Core>
 #include <ros/node_handle.h>
+#include <yaml-cpp/yaml.h>
 
 #include "cable_dynamics/params/cable_params.h"
 
 namespace cable_dynamics {
 
-/// ROS-side options (private parameters under `~ros/`).
+/// ROS-side options (private parameters under `~ros/`); ranges in README.md.
 struct NodeOptions {
-  double rate = 100.0;                  ///< simulation and publishing cycles per second [Hz]
-  std::string world_frame = "world";    ///< REP-103 frame (z up) the cable lives in
-  std::string frame_prefix;             ///< prepended to every frame and joint name; default "<namespace>/"
+  double rate = 100.0;                ///< simulation and publishing cycles per second [Hz]
+  std::string world_frame = "world";  ///< REP-103 frame (z up) the cable lives in
+  std::string frame_prefix;           ///< prepended to every frame and joint name; default "<namespace>/"
   Eigen::Vector3d base_position = Eigen::Vector3d::Zero();  ///< cable base at rest, world frame [m]
-  double input_timeout = 1.0;           ///< inputs older than this are stale [s]
-  int max_steps_per_cycle = 2000;       ///< catch-up bound per cycle; beyond it the lag is reported
-  double tension_scale = 0.0;           ///< colour scale top [N]; 0 = the largest tension seen so far
-  double diagnostics_period = 1.0;      ///< [s]
+  double input_timeout = 1.0;     ///< inputs older than this, or stamped further ahead, are stale [s]
+  int max_steps_per_cycle = 2000;  ///< catch-up bound per cycle, in steps
+  double max_lag = 1.0;            ///< simulated time behind the clock beyond this is dropped (and reported) [s]
+  double tension_scale = 0.0;      ///< colour scale top [N]; 0 = the largest tension seen so far
+  double diagnostics_period = 1.0;  ///< [s]
 };
 
-/// Reads and validates the private namespace of `private_nh`. Throws ConfigError naming the key, the
-/// value and the allowed range.
+/// Validates the `ros` section of a parameter tree (absent: all defaults). `default_prefix` is the
+/// prefix used when `frame_prefix` is not given. Throws ConfigError naming the key, the value and the
+/// allowed range.
+NodeOptions parseNodeOptions(const YAML::Node& ros_section, const std::string& default_prefix);
+
+/// Reads and validates the private namespace of `private_nh`: the `ros` section into `options`, the rest
+/// with the config loader into `params`. Throws ConfigError naming the key, the value and the allowed range.
 void loadNodeParameters(const ros::NodeHandle& private_nh, CableParams& params, NodeOptions& options);
 
 }  // namespace cable_dynamics

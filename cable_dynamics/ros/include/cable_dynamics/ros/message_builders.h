@@ -1,0 +1,72 @@
+#pragma once
+/// \file
+/// \brief The node's output messages, allocated once (prepareOutputs) and then only filled, by index, from
+///        an OutputSource. These functions call nothing on the simulator and change no state.
+
+#include <string>
+#include <vector>
+
+#include <cable_msgs/CableState.h>
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/WrenchStamped.h>
+#include <sensor_msgs/JointState.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/ros/output_source.h"
+#include "cable_dynamics/urdf/cable_urdf.h"
+
+namespace cable_dynamics {
+
+/// Every message the node publishes, preallocated.
+struct CableOutputs {
+  sensor_msgs::JointState joints;
+  std::vector<geometry_msgs::TransformStamped> transforms;  ///< world -> paper, 3 per link, the load
+  visualization_msgs::MarkerArray markers;                  ///< cable, load, base_force, load_force, tension_scale
+  cable_msgs::CableState state;
+  geometry_msgs::WrenchStamped wrench;
+  diagnostic_msgs::DiagnosticArray diagnostics;
+};
+
+/// Counters and timing reported in cable_state and /diagnostics.
+struct NodeStatus {
+  double sim_time = 0.0;         ///< simulator's time since the last reset [s]
+  double step_time = 0.0;        ///< wall time spent stepping in the last cycle [s]
+  double lag = 0.0;              ///< simulated time behind the clock [s]
+  double dropped_time = 0.0;     ///< simulated time given up so far because the lag exceeded ros.max_lag [s]
+  double real_time_factor = 0.0;  ///< simulated s per wall s over the last window [-]
+  double loop_rate = 0.0;        ///< cycles per wall second over the last window [Hz]
+  double retried_share = 0.0;    ///< steps needing substeps in the last window [-]
+  bool paused = false;
+  bool diverged_recently = false;  ///< a step diverged since the last diagnostics
+  bool dropped_recently = false;   ///< simulated time was dropped since the last diagnostics
+  unsigned received = 0, rejected = 0, stale = 0, diverged = 0, retried = 0;
+};
+
+/// Sizes and names every message once: 3n joints, 2 + 3n transforms, 5 markers, n tensions.
+void prepareOutputs(const CableParams& params, const CableFrameNames& names, const std::string& world_frame,
+                    CableOutputs& out);
+
+/// Joint states: the paper's coordinates [rad], rates [rad/s], effort = the springs' torque [N m].
+void fillJointState(const OutputSource& source, const ros::Time& stamp, sensor_msgs::JointState& msg);
+/// TF: world -> paper frame (at `base_position` [m], half a turn about x), the link frames, the load frame
+/// (axes parallel to the world frame).
+void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
+                    std::vector<geometry_msgs::TransformStamped>& transforms);
+/// Markers: the cable coloured by tension against `tension_scale` [N], the load, the force arrows, the scale.
+void fillMarkers(const OutputSource& source, double total_length, double tension_scale, const ros::Time& stamp,
+                 visualization_msgs::MarkerArray& msg);
+/// cable_state: tensions, forces (world frame), energies, timing and counters.
+void fillCableState(const OutputSource& source, const NodeStatus& status, const ros::Time& stamp,
+                    cable_msgs::CableState& msg);
+/// The force on the ROV (world axes): the coupling's reaction when attached, else the force on the load [N].
+void fillWrench(const OutputSource& source, LoadMode mode, const ros::Time& stamp, geometry_msgs::WrenchStamped& msg);
+/// /diagnostics: one status with the level rules of README.md.
+void fillDiagnostics(const NodeStatus& status, const ros::Time& stamp, diagnostic_msgs::DiagnosticArray& msg);
+
+/// The diagnostics level and message for a status (README.md: OK, WARN behind real time or past
+/// divergences, ERROR dropping time, diverging now, or most steps needing substeps).
+unsigned char diagnosticLevel(const NodeStatus& status, std::string& message);
+
+}  // namespace cable_dynamics

@@ -1,0 +1,268 @@
+#include "cable_dynamics/ros/message_builders.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "cable_dynamics/dynamics/frames.h"
+
+namespace cable_dynamics {
+namespace {
+
+/// Half turn about x: the paper frame (z down) in the world frame (z up).
+const Eigen::Quaterniond kPaperInWorld(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()));
+
+/// A share of steps needing substeps above this makes the diagnostics an ERROR: dt is too large.
+constexpr double kRetriedShareError = 0.5;
+/// A lag above this makes the diagnostics a WARN [s].
+constexpr double kLagWarning = 0.1;
+
+enum MarkerIndex { kCableLine = 0, kLoadSphere = 1, kBaseArrow = 2, kLoadArrow = 3, kScaleText = 4, kMarkerCount = 5 };
+
+void setVector(geometry_msgs::Vector3& m, const Eigen::Vector3d& v) {
+  m.x = v.x();
+  m.y = v.y();
+  m.z = v.z();
+}
+
+void setPoint(geometry_msgs::Point& m, const Eigen::Vector3d& v) {
+  m.x = v.x();
+  m.y = v.y();
+  m.z = v.z();
+}
+
+void setPose(geometry_msgs::Transform& t, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
+  setVector(t.translation, p);
+  t.rotation.x = q.x();
+  t.rotation.y = q.y();
+  t.rotation.z = q.z();
+  t.rotation.w = q.w();
+}
+
+/// Blue (slack) through green to red (the top of the scale); compression in grey.
+std_msgs::ColorRGBA tensionColor(double tension, double scale) {
+  std_msgs::ColorRGBA c;
+  c.a = 1.0;
+  if (tension < 0.0) {
+    c.r = c.g = c.b = 0.6f;
+    return c;
+  }
+  const double f = std::clamp(tension / scale, 0.0, 1.0);
+  c.r = static_cast<float>(std::clamp(2.0 * f - 1.0, 0.0, 1.0));
+  c.g = static_cast<float>(1.0 - std::abs(2.0 * f - 1.0));
+  c.b = static_cast<float>(std::clamp(1.0 - 2.0 * f, 0.0, 1.0));
+  return c;
+}
+
+/// The diagnostics' key-value pairs, in this order (values written by index).
+const char* const kDiagnosticKeys[] = {"loop rate [Hz]",    "real-time factor",  "simulated time [s]", "lag [s]",
+                                       "dropped time [s]",  "step time [s]",     "received inputs",    "rejected inputs",
+                                       "stale inputs",      "diverged steps",    "retried steps",      "retried share"};
+constexpr int kDiagnosticCount = sizeof(kDiagnosticKeys) / sizeof(kDiagnosticKeys[0]);
+
+void format(std::string& out, const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof(text), pattern, value);
+  out = text;
+}
+
+}  // namespace
+
+void prepareOutputs(const CableParams& params, const CableFrameNames& names, const std::string& world_frame,
+                    CableOutputs& out) {
+  const int n = params.links, dof = 3 * n;
+  out.joints.name.resize(dof);
+  for (int i = 0; i < dof; ++i) out.joints.name[i] = names.joint(i);
+  out.joints.position.assign(dof, 0.0);
+  out.joints.velocity.assign(dof, 0.0);
+  out.joints.effort.assign(dof, 0.0);
+
+  // TF: world -> paper frame, then every link frame, the URDF's intermediate frames, and the load.
+  out.transforms.resize(2 + 3 * n);
+  out.transforms[0].header.frame_id = world_frame;
+  out.transforms[0].child_frame_id = names.paper();
+  for (int k = 0; k < n; ++k) {
+    out.transforms[1 + 3 * k].child_frame_id = names.link(k + 1);
+    out.transforms[2 + 3 * k].child_frame_id = names.afterAzimuth(k + 1);
+    out.transforms[3 + 3 * k].child_frame_id = names.afterElevation(k + 1);
+  }
+  out.transforms.back().child_frame_id = names.load();
+  for (std::size_t i = 1; i < out.transforms.size(); ++i) out.transforms[i].header.frame_id = names.paper();
+
+  // Markers: the cable coloured by tension, the load, force arrows at both ends, the colour scale.
+  out.markers.markers.resize(kMarkerCount);
+  const char* const kNamespaces[kMarkerCount] = {"cable", "load", "base_force", "load_force", "tension_scale"};
+  const int kTypes[kMarkerCount] = {visualization_msgs::Marker::LINE_STRIP, visualization_msgs::Marker::SPHERE,
+                                    visualization_msgs::Marker::ARROW, visualization_msgs::Marker::ARROW,
+                                    visualization_msgs::Marker::TEXT_VIEW_FACING};
+  for (int i = 0; i < kMarkerCount; ++i) {
+    visualization_msgs::Marker& m = out.markers.markers[i];
+    m.header.frame_id = names.paper();
+    m.ns = kNamespaces[i];
+    m.id = 0;
+    m.type = kTypes[i];
+    m.action = visualization_msgs::Marker::ADD;
+    m.pose.orientation.w = 1.0;
+    m.color.a = 1.0;
+  }
+  const double length = params.totalLength();
+  const double width = std::max(4.0 * params.diameter, 0.008 * length);  // [m]
+  visualization_msgs::Marker& line = out.markers.markers[kCableLine];
+  line.scale.x = width;
+  line.points.resize(n + 1);
+  line.colors.resize(n + 1);
+  visualization_msgs::Marker& load = out.markers.markers[kLoadSphere];
+  load.scale.x = load.scale.y = load.scale.z = std::max(0.5, 0.03 * length);
+  load.color.r = 1.0;
+  load.color.g = 0.8f;
+  for (int i : {kBaseArrow, kLoadArrow}) {
+    visualization_msgs::Marker& arrow = out.markers.markers[i];
+    arrow.points.resize(2);
+    arrow.scale.x = width;        // shaft diameter
+    arrow.scale.y = 2.0 * width;  // head diameter
+    arrow.scale.z = 3.0 * width;  // head length
+    arrow.color.r = 1.0;
+    arrow.color.b = 1.0;
+  }
+  visualization_msgs::Marker& text = out.markers.markers[kScaleText];
+  text.scale.z = std::max(0.5, 0.03 * length);
+  text.color.r = text.color.g = text.color.b = 1.0;
+  text.text.reserve(160);
+
+  out.state.tension.assign(n, 0.0);
+  out.state.header.frame_id = world_frame;
+  out.wrench.header.frame_id = names.load();  // at the ROV, axes parallel to the world frame's
+
+  out.diagnostics.status.resize(1);
+  diagnostic_msgs::DiagnosticStatus& status = out.diagnostics.status[0];
+  status.name = "cable_dynamics: " + (names.prefix.empty() ? std::string("cable") : names.prefix);
+  status.hardware_id = names.paper();
+  status.values.resize(kDiagnosticCount);
+  for (int i = 0; i < kDiagnosticCount; ++i) {
+    status.values[i].key = kDiagnosticKeys[i];
+    status.values[i].value.reserve(32);
+  }
+}
+
+void fillJointState(const OutputSource& source, const ros::Time& stamp, sensor_msgs::JointState& msg) {
+  const SimulationSnapshot& s = source.snapshot;
+  for (int i = 0; i < s.q.size(); ++i) {
+    msg.position[i] = s.q(i);
+    msg.velocity[i] = s.qd(i);
+    msg.effort[i] = -source.spring_force(i);
+  }
+  msg.header.stamp = stamp;
+}
+
+void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
+                    std::vector<geometry_msgs::TransformStamped>& transforms) {
+  const int n = static_cast<int>(source.links.size());
+  setPose(transforms[0].transform, base_position, kPaperInWorld);
+  for (int k = 0; k < n; ++k) {
+    setPose(transforms[1 + 3 * k].transform, source.links[k].position, source.links[k].orientation);
+    setPose(transforms[2 + 3 * k].transform, source.after_azimuth[k].position, source.after_azimuth[k].orientation);
+    setPose(transforms[3 + 3 * k].transform, source.after_elevation[k].position,
+            source.after_elevation[k].orientation);
+  }
+  // The load frame is aligned with the world frame (only translated), so the wrench reads in world axes.
+  setPose(transforms.back().transform, source.snapshot.chain.ends.col(n), kPaperInWorld.conjugate());
+  for (auto& t : transforms) t.header.stamp = stamp;
+}
+
+void fillMarkers(const OutputSource& source, double total_length, double tension_scale, const ros::Time& stamp,
+                 visualization_msgs::MarkerArray& msg) {
+  const ChainOutputs& c = source.snapshot.chain;
+  const int n = static_cast<int>(c.tension.size());
+  visualization_msgs::Marker& line = msg.markers[kCableLine];
+  for (int k = 0; k <= n; ++k) {
+    setPoint(line.points[k], c.ends.col(k));
+    line.colors[k] = tensionColor(c.tension(std::min(k, n - 1)), tension_scale);
+  }
+  msg.markers[kLoadSphere].pose.position = line.points[n];
+  const double arrow_per_newton = 0.1 * total_length / std::max(tension_scale, 1.0);  // [m/N]
+  const Eigen::Vector3d base = c.ends.col(0), tip = c.ends.col(n);
+  setPoint(msg.markers[kBaseArrow].points[0], base);
+  setPoint(msg.markers[kBaseArrow].points[1], base + arrow_per_newton * c.base_force);
+  setPoint(msg.markers[kLoadArrow].points[0], tip);
+  setPoint(msg.markers[kLoadArrow].points[1], tip + arrow_per_newton * c.load_force);
+  char text[160];
+  std::snprintf(text, sizeof(text), "tension: blue 0 N, green %.0f N, red %.0f N  (top %.1f N)", 0.5 * tension_scale,
+                tension_scale, c.tension(0));
+  visualization_msgs::Marker& label = msg.markers[kScaleText];
+  label.text = text;
+  label.pose.position.x = c.ends(0, 0) - 0.3 * total_length;
+  label.pose.position.z = c.ends(2, 0) + 0.1 * total_length;
+  for (auto& m : msg.markers) m.header.stamp = stamp;
+}
+
+void fillCableState(const OutputSource& source, const NodeStatus& status, const ros::Time& stamp,
+                    cable_msgs::CableState& msg) {
+  const SimulationSnapshot& s = source.snapshot;
+  const ChainOutputs& c = s.chain;
+  msg.header.stamp = stamp;
+  for (int k = 0; k < c.tension.size(); ++k) msg.tension[k] = c.tension(k);
+  msg.top_tension = c.tension(0);
+  setVector(msg.load_force, paperToWorld(c.load_force));
+  setVector(msg.base_force, paperToWorld(c.base_force));
+  msg.kinetic_energy = c.kinetic_energy;
+  msg.potential_energy = c.potential_energy;
+  msg.elastic_energy = c.elastic_energy;
+  msg.dissipated_energy = s.dissipated_energy;
+  msg.sim_time = s.time;
+  msg.step_time = status.step_time;
+  msg.real_time_factor = status.real_time_factor;
+  msg.lag = status.lag;
+  msg.paused = status.paused;
+  msg.received_inputs = status.received;
+  msg.rejected_inputs = status.rejected;
+  msg.stale_inputs = status.stale;
+  msg.diverged_steps = status.diverged;
+  msg.retried_steps = status.retried;
+}
+
+void fillWrench(const OutputSource& source, LoadMode mode, const ros::Time& stamp, geometry_msgs::WrenchStamped& msg) {
+  const ChainOutputs& c = source.snapshot.chain;
+  // The ROV feels the coupling's reaction when attached; otherwise the load is the ROV.
+  const Eigen::Vector3d on_rov = mode == LoadMode::kAttached ? Eigen::Vector3d(-c.coupling_force) : c.load_force;
+  msg.header.stamp = stamp;
+  setVector(msg.wrench.force, paperToWorld(on_rov));
+}
+
+unsigned char diagnosticLevel(const NodeStatus& s, std::string& message) {
+  using diagnostic_msgs::DiagnosticStatus;
+  if (s.diverged_recently) {
+    message = "the simulation diverged and was recovered (initial shape; time and inputs carry on)";
+    return DiagnosticStatus::ERROR;
+  }
+  if (s.retried_share > kRetriedShareError) {
+    message = "most steps need substeps: simulation.dt is too large for this cable";
+    return DiagnosticStatus::ERROR;
+  }
+  if (s.dropped_recently) {
+    message = "cannot keep up with the clock: simulated time dropped (lag above ros.max_lag)";
+    return DiagnosticStatus::ERROR;
+  }
+  if (!s.paused && (s.lag > kLagWarning || (s.real_time_factor > 0.0 && s.real_time_factor < 0.9))) {
+    message = "behind real time";
+    return DiagnosticStatus::WARN;
+  }
+  if (s.diverged > 0) {
+    message = "running; the simulation diverged earlier and was recovered";
+    return DiagnosticStatus::WARN;
+  }
+  message = s.paused ? "paused" : "running";
+  return DiagnosticStatus::OK;
+}
+
+void fillDiagnostics(const NodeStatus& s, const ros::Time& stamp, diagnostic_msgs::DiagnosticArray& msg) {
+  msg.header.stamp = stamp;
+  diagnostic_msgs::DiagnosticStatus& status = msg.status[0];
+  status.level = diagnosticLevel(s, status.message);
+  const double values[kDiagnosticCount] = {s.loop_rate,        s.real_time_factor, s.sim_time,   s.lag,
+                                           s.dropped_time,     s.step_time,        double(s.received),
+                                           double(s.rejected), double(s.stale),    double(s.diverged),
+                                           double(s.retried),  s.retried_share};
+  for (int i = 0; i < kDiagnosticCount; ++i) format(status.values[i].value, i >= 6 && i <= 10 ? "%.0f" : "%.6g", values[i]);
+}
+
+}  // namespace cable_dynamics

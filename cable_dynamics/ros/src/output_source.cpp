@@ -1,0 +1,46 @@
+#include "cable_dynamics/ros/output_source.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace cable_dynamics {
+namespace {
+
+bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
+
+bool finite(const SimulationSnapshot& s) {
+  const ChainOutputs& c = s.chain;
+  return std::isfinite(s.time) && s.q.allFinite() && s.qd.allFinite() && c.ends.allFinite() && c.tension.allFinite() &&
+         finite(c.load_force) && finite(c.base_force) && finite(c.coupling_force) && std::isfinite(c.kinetic_energy) &&
+         std::isfinite(c.potential_energy) && std::isfinite(c.elastic_energy) && s.axes.allFinite() &&
+         s.twists.allFinite() && std::isfinite(s.dissipated_energy) && std::isfinite(s.work_input) &&
+         std::isfinite(s.total_energy);
+}
+
+bool finite(const PoseVector& poses) {
+  for (const Pose& p : poses) {
+    if (!p.position.allFinite() || !p.orientation.coeffs().allFinite()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool readOutputs(CableSimulator& sim, const ElasticJoints& joints, OutputSource& out) {
+  try {
+    sim.snapshot(out.snapshot);
+  } catch (const std::runtime_error&) {  // the state cannot be evaluated
+    return false;
+  }
+  if (!finite(out.snapshot)) return false;
+  const int n = sim.links();
+  if (out.alpha_hint.size() != n) out.alpha_hint = Eigen::VectorXd::Zero(n);
+  joints.force(out.snapshot.q, out.spring_force);
+  linkFrames(out.snapshot.axes, out.snapshot.twists, out.snapshot.chain.ends.col(0), sim.properties().length, out.links,
+             out.after_azimuth, out.after_elevation, out.alpha_hint);
+  if (!out.alpha_hint.allFinite()) out.alpha_hint.setZero();  // never let a bad hint outlive this instant
+  return out.spring_force.allFinite() && finite(out.links) && finite(out.after_azimuth) &&
+         finite(out.after_elevation);
+}
+
+}  // namespace cable_dynamics
