@@ -35,18 +35,9 @@ JOBS="${JOBS:-2}"
 log() { echo "[compare] $*" >&2; }
 
 # --- packages: only what fluid_step needs (no MuJoCo/DART/...: cable_bench is not built) -------------
-packages=(cmake make g++ libeigen3-dev libyaml-cpp-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]} > 0)); then
-  sudo=()
-  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-  log "installing: ${missing[*]}"
-  "${sudo[@]}" apt-get update
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
-fi
+# shellcheck source=bench/packages.sh
+source "$(dirname "${BASH_SOURCE[0]}")/packages.sh"
+install_missing_packages compare cmake make g++ libeigen3-dev libyaml-cpp-dev
 
 # --- the two trees ------------------------------------------------------------------------------------
 TMP="$(mktemp -d "${TMPDIR:-/tmp}/compare_cores.XXXXXX")"

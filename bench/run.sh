@@ -11,20 +11,10 @@ export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 BENCH_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 BUILD_DIR="$BENCH_DIR/build"
 
-packages=(cmake make g++ libeigen3-dev libyaml-cpp-dev libmujoco-dev libdart-dev libsimbody-dev liborocos-kdl-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]} > 0)); then
-  sudo=()
-  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-  echo "[bench] installing: ${missing[*]}"
-  "${sudo[@]}" apt-get update
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
-else
-  echo "[bench] Debian packages: all present"
-fi
+# shellcheck source=bench/packages.sh
+source "$BENCH_DIR/packages.sh"
+install_missing_packages bench cmake make g++ libeigen3-dev libyaml-cpp-dev libmujoco-dev libdart-dev libsimbody-dev \
+  liborocos-kdl-dev
 
 echo "[bench] building into $BUILD_DIR"
 mkdir -p "$BUILD_DIR"
