@@ -139,7 +139,6 @@ EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links)
     const LinkConstants& c = model.block(b);
     LinkBlock& block = links.block(b);
     Lanes3 row_x, row_y, row_z, offset;  // T_k's rows and c_k
-    CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       const double l = c.length[i];
       const Vec3 p = l * block.e1[i], r = l * block.e2[i], x1 = block.x1[i], x2 = block.x2[i];

@@ -49,8 +49,7 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   if (model_.formulation() == Formulation::kRecursive) {
     solveArticulatedBody(model_, data_, all_joint_forces);
   } else {
-    data_.dense.allocate(links());  // a no-op: allocated at construction for this formulation
-    if (!solveDense(model_, data_)) return false;
+    if (!solveDense(model_, data_)) return false;  // its workspace: allocated by ChainData for this formulation
   }
   if (!finiteAngularAccelerations(data_.links)) return false;
   data_.input_power = data_.joint_force.col(0).dot(ends.base_velocity) + data_.coupling.dot(data_.tip_velocity);

@@ -12,7 +12,6 @@ CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const Cha
   for (int b = 0; b < data.links.blocks(); ++b) {
     const LinkConstants& constants = model.block(b);
     const LinkBlock& block = data.links.block(b);
-    CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       const double l = constants.length[i], m = constants.mass_per_length[i];
       const Vec3 v = block.base_vel[i], c = block.axis_rate[i], omega = block.omega[i], axis = block.u[i];
@@ -25,7 +24,6 @@ CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const Cha
   }
   kinetic = 0.5 * model.load().mass * data.tip_velocity.squaredNorm();
   potential = -model.load().weight * data.tip_position.z();
-  CABLE_LANE_LOOP
   for (int i = 0; i < kBlockLanes; ++i) {
     kinetic += kinetic_lanes[i];
     potential += potential_lanes[i];

@@ -10,8 +10,6 @@
 namespace cable_dynamics {
 namespace {
 
-const Eigen::Vector3d kDown = Eigen::Vector3d::UnitZ();
-
 /// The paper's springs and dampers act on the generalized coordinates: Q = -K q - C q'. Mapped to world
 /// torques by virtual power: tau = -Q_te n + (Q_psi - Q_phi cos te)/sin te e - Q_phi u, with Q in the
 /// absolute angles (Q_psi_i = Q_a_i - Q_a_{i+1}). Azimuth and torsion springs have no limit as

@@ -23,7 +23,6 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
   }
   for (int b = 0; b < links.blocks(); ++b) {
     LinkBlock& block = links.block(b);
-    CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       // Links are unit vectors up to the integrator's drift: use the normalized axis.
       const Vec3 raw = block.u[i], omega = block.omega[i];

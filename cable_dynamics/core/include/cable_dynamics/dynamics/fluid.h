@@ -77,7 +77,6 @@ class LinkDrag {
   EIGEN_ALWAYS_INLINE void addUniform(const Vec3& current, const LinkConstants& constants, LinkBlock& block) const {
     double c0[kBlockLanes], c1[kBlockLanes], c2[kBlockLanes], along[kBlockLanes];
     Lanes3 normal;
-    CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       const Vec3 relative = current - block.base_vel[i], axis = block.u[i], axis_rate = block.axis_rate[i];
       along[i] = dot(relative, axis);
@@ -90,7 +89,6 @@ class LinkDrag {
     double sum0[kBlockLanes] = {}, sum1[kBlockLanes] = {}, sum2[kBlockLanes] = {};
     for (int p = 0; p < points_; ++p) {
       const double node = nodes_[p], weight = weights_[p];
-      CABLE_LANE_LOOP
       for (int i = 0; i < kBlockLanes; ++i) {
         const double l = constants.length[i], s = node * l, w = weight * l;
         const double speed_squared = c0[i] + s * (c1[i] + s * c2[i]);  // |n(s)|^2; round-off can dip below 0

@@ -144,7 +144,7 @@ class LinkBlocks {
   /// 3-vector `field` of link k, e.g. get(&LinkBlock::u, k).
   Eigen::Vector3d get(Lanes3 LinkBlock::*field, int k) const { return toEigen((of(k).*field)[lane(k)]); }
   void set(Lanes3 LinkBlock::*field, int k, const Eigen::Vector3d& v) { (of(k).*field).set(lane(k), toVec3(v)); }
-  /// Scalar `field` of link k, e.g. get(&LinkBlock::length, k).
+  /// Scalar `field` of link k, e.g. get(&LinkBlock::twist_rate, k).
   double get(double (LinkBlock::*field)[kBlockLanes], int k) const { return (of(k).*field)[lane(k)]; }
 
  private:
