@@ -90,3 +90,6 @@ target_link_libraries(test_no_allocation cable_dynamics_core_nomalloc ${GTEST_MA
 catkin_add_gtest(test_formulations test/test_formulations.cpp)
 target_link_libraries(test_formulations cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 target_compile_definitions(test_formulations PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
+catkin_add_gtest(test_winch test/test_winch.cpp)
+target_link_libraries(test_winch cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

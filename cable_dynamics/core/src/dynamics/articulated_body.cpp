@@ -80,7 +80,7 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
   const double load_inertia = model.load().inertia;
   Symmetric3 child = Symmetric3::scaledIdentity(load_inertia);
   Vec3 child_force = toVec3(load_inertia * data.tip_known_acc - data.load_external);
-  for (int k = model.links() - 1; k >= 0; --k) {
+  for (int k = model.links() - 1; k >= model.firstLink(); --k) {
     const LinkConstants& c = model.of(k);
     LinkBlock& block = data.links.of(k);
     const int i = LinkBlocks::lane(k);
@@ -133,9 +133,11 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
 /// e1 x2^T) and c_k = l (y_g2 e1 - y_g1 e2), formed on vectors for a block's links just before its turn.
 /// The serial pass is then three short dot products per link. Returns d_n, the tip's.
 EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links) {
-  const int n = model.links();
+  const int n = model.links(), first = model.firstLink();
   Vec3 d = {0.0, 0.0, 0.0};  // the base translates as prescribed: d_0 = 0
-  for (int b = 0; b < links.blocks(); ++b) {
+  // The drum's slots (a winch) take no part: their d stays 0 (their rates are not used).
+  for (int k = 0; k < first; ++k) links.of(k).delta_acc.set(LinkBlocks::lane(k), d);
+  for (int b = first / kBlockLanes; b < links.blocks(); ++b) {
     const LinkConstants& c = model.block(b);
     LinkBlock& block = links.block(b);
     Lanes3 row_x, row_y, row_z, offset;  // T_k's rows and c_k
@@ -148,7 +150,7 @@ EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links)
       offset.set(i, block.y2[i] * p - block.y1[i] * r);
     }
     const int count = std::min(kBlockLanes, n - b * kBlockLanes);
-    for (int i = 0; i < count; ++i) {
+    for (int i = std::max(0, first - b * kBlockLanes); i < count; ++i) {
       block.delta_acc.set(i, d);
       const Vec3 off = offset[i];
       d = {dot(row_x[i], d) + off.x, dot(row_y[i], d) + off.y, dot(row_z[i], d) + off.z};
@@ -181,11 +183,13 @@ EIGEN_ALWAYS_INLINE double accelerationPass(const ChainModel& model, LinkBlocks&
   return total;
 }
 
-/// J_k = M_k d_k + F_k; at the base d_0 = 0: J_0 = F_0. The load's force from the tip's acceleration.
+/// J_k = M_k d_k + F_k; at the base link (firstLink()) d = 0: J = F. The load's force from the tip's acceleration.
 EIGEN_ALWAYS_INLINE void jointForcesPass(const ChainModel& model, ChainData& data, const Vec3& base_force,
                                          const Vec3& tip_delta, bool all_joint_forces) {
-  data.joint_force.col(0) = toEigen(base_force);
-  for (int k = 1; all_joint_forces && k < model.links(); ++k) {
+  const int first = model.firstLink();
+  data.joint_force.leftCols(first).setZero();  // the drum's slots (a winch)
+  data.joint_force.col(first) = toEigen(base_force);
+  for (int k = first + 1; all_joint_forces && k < model.links(); ++k) {
     const LinkBlock& block = data.links.of(k);
     const int i = LinkBlocks::lane(k);
     data.joint_force.col(k) = toEigen(block.mass[i] * block.delta_acc[i] + block.bias[i]);

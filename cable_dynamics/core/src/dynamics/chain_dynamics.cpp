@@ -31,6 +31,23 @@ CABLE_HOT_PATH bool finiteAngularAccelerations(const LinkBlocks& links) {
   return std::isfinite(total);
 }
 
+/// The energy the winch pays out with the cable per metre [J/m]: kinetic energy per length of the
+/// material at the base end (translation, and the rotation of the section) plus its potential energy
+/// there. The deployed cable's energy grows by this times the pay-out speed, besides the work done on it.
+double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, const Vec3& exit_velocity) {
+  const int first = model.firstLink();
+  const LinkConstants& c = model.of(first);
+  const LinkBlock& block = data.links.of(first);
+  const int i = LinkBlocks::lane(first);
+  const double l = c.length[i], per_length = c.mass_per_length[i];
+  const Vec3 omega = block.omega[i];
+  const double spin = dot(omega, block.u[i]);
+  const double kinetic = 0.5 * per_length * dot(exit_velocity, exit_velocity) +
+                         0.5 * (c.thick_transverse[i] * (dot(omega, omega) - spin * spin) + c.polar[i] * spin * spin) / l;
+  const double potential = -(c.weight[i] / l) * block.base_pos.z[i];
+  return kinetic + potential;
+}
+
 }  // namespace
 
 ChainDynamics::ChainDynamics(const CableParams& params) : model_(params), data_(model_) {
@@ -43,6 +60,7 @@ void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) { cable_dynamics::f
 
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
   if (!allFinite(x)) return false;
+  if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
   computeKinematics(model_, data_, x, ends);
   computeExternalLoads(model_, data_, ends);
   computeJointTorques(model_, data_, x);
@@ -52,7 +70,12 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
     if (!solveDense(model_, data_)) return false;  // its workspace: allocated by ChainData for this formulation
   }
   if (!finiteAngularAccelerations(data_.links)) return false;
-  data_.input_power = data_.joint_force.col(0).dot(ends.base_velocity) + data_.coupling.dot(data_.tip_velocity);
+  // The base does work through the force it holds the base link's end with, at that end's material
+  // velocity (with a winch, the paid-out cable's), and the paid-out cable brings its own energy.
+  const int first = model_.firstLink();
+  const Vec3 exit_velocity = data_.links.of(first).base_vel[LinkBlocks::lane(first)];
+  data_.input_power = data_.joint_force.col(first).dot(toEigen(exit_velocity)) + data_.coupling.dot(data_.tip_velocity);
+  if (ends.winch) data_.input_power += ends.winch_speed * paidOutEnergyPerLength(model_, data_, exit_velocity);
   return true;
 }
 
@@ -64,8 +87,9 @@ bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, 
 }
 
 CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
-  const int n = links();
-  for (int k = 0; k < n; ++k) {
+  const int n = links(), first = model_.firstLink();
+  xdot.head(StateLayout::axis(first)).setZero();  // the drum's slots (a winch) stay as they are
+  for (int k = first; k < n; ++k) {
     const LinkBlock& block = data_.links.of(k);
     const int i = LinkBlocks::lane(k);
     xdot.segment<3>(StateLayout::axis(k)) << block.axis_rate.x[i], block.axis_rate.y[i], block.axis_rate.z[i];
@@ -80,8 +104,8 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   if (!solve(x, ends, true)) return false;
   const int n = links();
   const LinkBlocks& l = data_.links;
-  out.omega_rate.resize(3 * n);
-  for (int k = 0; k < n; ++k) out.omega_rate.segment<3>(3 * k) = l.get(&LinkBlock::omega_rate, k);
+  out.omega_rate.setZero(3 * n);  // the drum's slots stay at rest
+  for (int k = model_.firstLink(); k < n; ++k) out.omega_rate.segment<3>(3 * k) = l.get(&LinkBlock::omega_rate, k);
   out.ends.resize(3, n + 1);
   for (int k = 0; k < n; ++k) out.ends.col(k) = l.get(&LinkBlock::base_pos, k);
   out.ends.col(n) = data_.tip_position;
@@ -89,7 +113,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   out.tension.resize(n);
   for (int k = 0; k < n; ++k) out.tension(k) = -data_.joint_force.col(k).dot(l.get(&LinkBlock::u, k));
   out.load_force = data_.load_force;
-  out.base_force = -data_.joint_force.col(0);
+  out.base_force = -data_.joint_force.col(model_.firstLink());
   out.coupling_force = data_.coupling;
   kineticAndPotentialEnergy(model_, data_, out.kinetic_energy, out.potential_energy);
   out.elastic_energy = elasticEnergy(model_, data_, x);
@@ -97,6 +121,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
 }
 
 double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude) {
+  if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
   computeKinematics(model_, data_, x, ends);
   return solvedMechanicalEnergy(x, magnitude);
 }

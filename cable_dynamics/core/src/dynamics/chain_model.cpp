@@ -4,12 +4,14 @@ namespace cable_dynamics {
 
 ChainModel::ChainModel(const CableParams& params)
     : n_(params.links),
-      properties_(deriveLinkProperties(params)),
+      has_winch_(params.winch.enabled),
+      nominal_(deriveLinkProperties(params)),
+      properties_(nominal_),
       formulation_(params.simulation.formulation),
       fluid_density_(params.fluid.density),
       drag_(params.fluid, params.diameter),
       lanes_((params.links + kBlockLanes - 1) / kBlockLanes) {
-  const LinkProperties& p = properties_;
+  const LinkProperties& p = nominal_;
   has_springs_ = p.stiffness_elevation.any() || p.stiffness_azimuth.any() || p.stiffness_torsion.any() ||
                  p.damping_elevation.any() || p.damping_azimuth.any() || p.damping_torsion.any();
   load_.mass = p.load_mass;
@@ -18,29 +20,59 @@ ChainModel::ChainModel(const CableParams& params)
   load_.drag_area = params.load.drag_area;
   load_.coupling_stiffness = params.load.coupling_stiffness;
   load_.coupling_damping = params.load.coupling_damping;
+  // Padding lanes past the last link: zero length and mass, 1/I_P = 0; they add nothing anywhere.
+  for (LinkConstants& c : lanes_) c = LinkConstants{};
+  deploy(params.winch.stored_links);
+}
 
-  const double added = p.added_mass_per_length, radius = p.radius;
-  for (int b = 0; b < blocks(); ++b) {
-    LinkConstants& c = lanes_[b];
-    c = LinkConstants{};  // padding lanes: zero length and mass, 1/I_P = 0; they add nothing anywhere
-    for (int i = 0; i < kBlockLanes; ++i) {
-      const int k = b * kBlockLanes + i;
-      if (k >= n_) continue;
-      const double l = p.length(k);
-      c.length[i] = l;
-      c.mass_per_length[i] = p.mass(k) / l;
-      c.added[i] = added;
-      c.across[i] = c.mass_per_length[i] + added;
-      c.weight[i] = p.gravity * p.submerged_mass(k);
-      c.half_moment[i] = 0.5 * l * l * c.across[i];
-      c.third_moment[i] = l * l * l / 3.0 * c.across[i];
-      // The translation integral over the link already holds m l^2/12; the rest of I_T is the thickness.
-      c.thick_transverse[i] = p.mass(k) * (radius * radius / 4.0);
-      c.own_transverse[i] = c.third_moment[i] + c.thick_transverse[i];
-      c.polar[i] = p.inertia_polar(k);
-      c.inverse_polar[i] = 1.0 / p.inertia_polar(k);
-    }
+void ChainModel::setLinkLength(int k, double l) {
+  LinkProperties& p = properties_;
+  // Per unit length, from the configured slot (a cable's mass per length does not change with its length).
+  const double per_length = nominal_.mass(k) / nominal_.length(k);
+  const double submerged_per_length = nominal_.submerged_mass(k) / nominal_.length(k);
+  const double radius = p.radius, m = per_length * l;
+  p.length(k) = l;
+  p.mass(k) = m;
+  p.submerged_mass(k) = submerged_per_length * l;
+  p.inertia_transverse(k) = m * (l * l / 12.0 + radius * radius / 4.0);
+  p.inertia_polar(k) = m * (radius * radius / 2.0);
+
+  LinkConstants& c = lanes_[k / kBlockLanes];
+  const int i = k % kBlockLanes;
+  const bool deployed = l > 0.0;
+  const double added = deployed ? p.added_mass_per_length : 0.0;
+  c.length[i] = l;
+  c.mass_per_length[i] = deployed ? per_length : 0.0;
+  c.added[i] = added;
+  c.across[i] = c.mass_per_length[i] + added;
+  c.weight[i] = p.gravity * p.submerged_mass(k);
+  c.half_moment[i] = 0.5 * l * l * c.across[i];
+  c.third_moment[i] = l * l * l / 3.0 * c.across[i];
+  // The translation integral over the link already holds m l^2/12; the rest of I_T is the thickness.
+  c.thick_transverse[i] = m * (radius * radius / 4.0);
+  c.own_transverse[i] = c.third_moment[i] + c.thick_transverse[i];
+  c.polar[i] = p.inertia_polar(k);
+  c.inverse_polar[i] = deployed ? 1.0 / p.inertia_polar(k) : 0.0;
+}
+
+void ChainModel::deploy(int first) {
+  first_ = first;
+  for (int k = 0; k < n_; ++k) setLinkLength(k, k < first ? 0.0 : nominal_.length(k));
+  // The base's joint (the clamp's springs and dampers, or none for a pin) moves with the base link;
+  // the drum's slots have no joints. Every drum slot has the base link's length, so slot 0's configured
+  // springs are the clamp's for any slot.
+  Eigen::VectorXd LinkProperties::*const springs[] = {
+      &LinkProperties::stiffness_elevation, &LinkProperties::stiffness_azimuth, &LinkProperties::stiffness_torsion,
+      &LinkProperties::damping_elevation,   &LinkProperties::damping_azimuth,   &LinkProperties::damping_torsion};
+  for (Eigen::VectorXd LinkProperties::*v : springs) {
+    properties_.*v = nominal_.*v;  // same size: no allocation
+    (properties_.*v).head(first).setZero();
+    (properties_.*v)(first) = (nominal_.*v)(0);
   }
+}
+
+void ChainModel::setWinchLinkLength(double length) {
+  if (length != properties_.length(first_)) setLinkLength(first_, length);
 }
 
 }  // namespace cable_dynamics

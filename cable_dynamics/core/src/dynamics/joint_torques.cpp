@@ -48,11 +48,13 @@ void paperSpringTorques(const ChainModel& model, ChainData& data, const Eigen::V
 void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
   const LinkProperties& p = model.properties();
   const LinkBlocks& links = data.links;
-  for (int k = 0; k < model.links(); ++k) {
-    const Eigen::Vector3d prev = k > 0 ? links.get(&LinkBlock::u, k - 1) : p.clamp_axis;
+  const int first = model.firstLink();
+  for (int k = first; k < model.links(); ++k) {
+    const bool inner = k > first;  // joint `first` is the base's
+    const Eigen::Vector3d prev = inner ? links.get(&LinkBlock::u, k - 1) : p.clamp_axis;
     const Eigen::Vector3d axis = links.get(&LinkBlock::u, k);
     const JointGeometry g =
-        jointGeometry(prev, axis, x(StateLayout::twist(k)), k > 0 ? x(StateLayout::twist(k - 1)) : p.clamp_twist);
+        jointGeometry(prev, axis, x(StateLayout::twist(k)), inner ? x(StateLayout::twist(k - 1)) : p.clamp_twist);
     // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
     const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * bendOverSine(g.bend, g.sine) * g.cross;
     // Twist: a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
@@ -60,14 +62,14 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
     const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
     // Dampers on the relative angular velocity: across the mean axis (bending) and about it (twist).
     const Eigen::Vector3d relative =
-        links.get(&LinkBlock::omega, k) - (k > 0 ? links.get(&LinkBlock::omega, k - 1) : Eigen::Vector3d::Zero());
+        links.get(&LinkBlock::omega, k) - (inner ? links.get(&LinkBlock::omega, k - 1) : Eigen::Vector3d::Zero());
     const Eigen::Vector3d direction = (prev + axis).normalized();
     const double about = relative.dot(direction);
     const Eigen::Vector3d damper =
         -p.damping_elevation(k) * (relative - about * direction) - p.damping_torsion(k) * about * direction;
     data.spring_torque.col(k) += bend_torque + twist_torque;
     data.damping_torque.col(k) += damper;
-    if (k > 0) {
+    if (inner) {
       data.spring_torque.col(k - 1) -= bend_torque + twist_torque;
       data.damping_torque.col(k - 1) -= damper;
     }
@@ -114,10 +116,12 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
     return energy;
   }
   const LinkBlocks& links = data.links;
-  for (int k = 0; k < model.links(); ++k) {
-    const Eigen::Vector3d prev = k > 0 ? links.get(&LinkBlock::u, k - 1) : p.clamp_axis;
+  const int first = model.firstLink();
+  for (int k = first; k < model.links(); ++k) {
+    const bool inner = k > first;
+    const Eigen::Vector3d prev = inner ? links.get(&LinkBlock::u, k - 1) : p.clamp_axis;
     const JointGeometry g = jointGeometry(prev, links.get(&LinkBlock::u, k), x(StateLayout::twist(k)),
-                                          k > 0 ? x(StateLayout::twist(k - 1)) : p.clamp_twist);
+                                          inner ? x(StateLayout::twist(k - 1)) : p.clamp_twist);
     energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
   }
   return energy;

@@ -36,9 +36,27 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
       block.twist_rate[i] = denominator > 1e-12 ? -(omega.z + spin) / denominator : -spin;
     }
   }
-  // Base ends: running sums along the chain.
+  // Base ends: running sums along the chain, from the base link (the drum's slots before it sit at
+  // the base). A winch pays the base link's material out along its axis u at the speed v: each of its
+  // points moves by v u more and accelerates by v' u + 2 v u' more (docs/MODEL.md section 9), and the
+  // links beyond it with them.
+  const int first = model.firstLink();
   Vec3 pos = toVec3(ends.base_position), vel = toVec3(ends.base_velocity), acc = toVec3(ends.base_acceleration);
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < first; ++k) {
+    LinkBlock& block = links.of(k);
+    const int i = LinkBlocks::lane(k);
+    block.base_pos.set(i, pos);
+    block.base_vel.set(i, vel);
+    block.known_acc.set(i, acc);
+  }
+  if (ends.winch) {
+    const LinkBlock& block = links.of(first);
+    const int i = LinkBlocks::lane(first);
+    const Vec3 u = block.u[i];
+    vel = vel + ends.winch_speed * u;
+    acc = acc + ends.winch_acceleration * u + (2.0 * ends.winch_speed) * block.axis_rate[i];
+  }
+  for (int k = first; k < n; ++k) {
     LinkBlock& block = links.of(k);
     const int i = LinkBlocks::lane(k);
     block.base_pos.set(i, pos);

@@ -9,6 +9,10 @@ double CableParams::totalLength() const {
   return std::accumulate(link_lengths.begin(), link_lengths.end(), 0.0);
 }
 
+double CableParams::deployedLength() const {
+  return std::accumulate(link_lengths.begin() + winch.stored_links, link_lengths.end(), 0.0);
+}
+
 LinkProperties deriveLinkProperties(const CableParams& params) {
   const int n = params.links;
   const double radius = 0.5 * params.diameter;                  // [m]

@@ -135,6 +135,69 @@ void parseFluid(Section fluid, CableParams& p) {
   fluid.rejectUnknownKeys();
 }
 
+/// `winch:` (after everything else: it adds the drum's slots in front of the configured cable).
+void parseWinch(Section winch, CableParams& p) {
+  WinchParams& w = p.winch;
+  const double deployed = p.totalLength();
+  const double link = p.link_lengths.front();
+  w.enabled = true;
+  w.link_length = link;
+  w.max_length = winch.number("max_length", 0.0, deployed, 1e5, false, "m", true);
+  w.min_length = winch.number("min_length", link, link, deployed, false, "m");
+  w.max_speed = winch.number("max_speed", 1.0, 0.0, 100.0, true, "m/s");
+  w.max_acceleration = winch.number("max_acceleration", 0.5, 0.0, 1e3, true, "m/s^2");
+  w.speed = winch.number("speed", 0.0, -w.max_speed, w.max_speed, false, "m/s");
+  if (winch.has("schedule")) {
+    const YAML::Node rows = winch.raw("schedule");
+    const std::string key = winch.path() + ".schedule";
+    if (!rows.IsSequence()) {
+      throw ConfigError(key, describeNode(rows), "a list of {time: s, speed: m/s} or {time: s, length: m}");
+    }
+    double previous = -kInf;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      Section row(rows[i], key + "[" + std::to_string(i) + "]");
+      WinchCommand c;
+      c.time = row.number("time", 0.0, 0.0, 1e7, false, "s", true);
+      if (!(c.time > previous)) throw ConfigError(row.path() + ".time", describeNode(rows[i]["time"]), "times strictly increasing");
+      previous = c.time;
+      const bool has_speed = row.has("speed"), has_length = row.has("length");
+      if (has_speed == has_length) {
+        throw ConfigError(row.path(), describeNode(rows[i]), "exactly one of speed [m/s] or length [m]");
+      }
+      c.to_length = has_length;
+      c.value = has_length ? row.number("length", 0.0, w.min_length, w.max_length, false, "m")
+                           : row.number("speed", 0.0, -w.max_speed, w.max_speed, false, "m/s");
+      row.rejectUnknownKeys();
+      w.schedule.push_back(c);
+    }
+  }
+  winch.rejectUnknownKeys();
+  // The winch's link moves with the paid-out cable and has a length of its own: the recursion's
+  // formulation, and springs of the bending model (docs/MODEL.md section 9).
+  if (p.simulation.formulation != Formulation::kRecursive) {
+    throw ConfigError("simulation.formulation", "paper", "recursive with a winch");
+  }
+  if (p.simulation.integrator != Integrator::kRk4) {
+    throw ConfigError("simulation.integrator", integratorName(p.simulation.integrator), "rk4 with a winch");
+  }
+  if (p.stiffness.model == StiffnessModel::kPaper && (p.stiffness.elevation > 0.0 || p.damping.elevation > 0.0)) {
+    throw ConfigError("cable.stiffness.model", "paper", "bending when a winch pays out a cable with springs or dampers");
+  }
+  // Slots for the longest deployment: one more than the whole links it adds, since the winch's link
+  // is between one and 2.25 links long.
+  const int stored = static_cast<int>(std::ceil((w.max_length - deployed) / link - 1e-9)) + 1;
+  if (p.links + stored > kMaxLinks) {
+    throw ConfigError(winch.path() + ".max_length", std::to_string(w.max_length),
+                      "at most " + std::to_string(kMaxLinks) + " links of " + std::to_string(link) + " m in all");
+  }
+  w.stored_links = stored;
+  p.links += stored;
+  p.link_lengths.insert(p.link_lengths.begin(), stored, link);
+  for (std::vector<double>* v : {&p.initial.elevation, &p.initial.azimuth, &p.initial.torsion}) {
+    v->insert(v->begin(), stored, 0.0);  // on the drum: straight down, at rest (no length, no mass)
+  }
+}
+
 }  // namespace
 
 CableParams parseConfig(const YAML::Node& root) {
@@ -175,6 +238,7 @@ CableParams parseConfig(const YAML::Node& root) {
                                  ? Formulation::kRecursive
                                  : Formulation::kPaper;
   simulation.rejectUnknownKeys();
+  if (top.has("winch")) parseWinch(top.sub("winch"), p);
   top.rejectUnknownKeys();
   // The paper's springs act on absolute angles measured from the vertical: a clamp direction or a pin
   // has no meaning for them.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cable_dynamics/params/states.h"
+#include "cable_dynamics/simulation/winch_links.h"
 
 namespace cable_dynamics {
 namespace {
@@ -43,8 +44,8 @@ CableSimulator::CableSimulator(const CableParams& params)
     : params_(params),
       dynamics_(params),
       scheme_(makeTimeScheme(params.simulation.integrator, params.links)),
-      ends_(params.base, params.load),
-      limits_(stepLimits(dynamics_.properties().length.minCoeff(), params.gravity)),
+      ends_(params.base, params.load, params.winch),
+      limits_(stepLimits(*std::min_element(params.link_lengths.begin(), params.link_lengths.end()), params.gravity)),
       dt_(params.simulation.dt) {
   rejectSingularPaperSprings(params);
   const int size = dynamics_.stateSize();
@@ -59,6 +60,10 @@ void CableSimulator::reset() {
   Eigen::VectorXd q, qd;
   initialState(params_, q, qd);
   ends_.reset();
+  if (hasWinch()) ends_.winch().reset(params_.deployedLength());
+  deployConfigured();
+  links_added_ = links_removed_ = 0;
+  regrid_energy_ = 0.0;
   dynamics_.current() = CurrentField(params_.fluid);
   setPaperState(q, qd);
 }
@@ -67,8 +72,44 @@ void CableSimulator::recover() {
   const double t = time_;
   Eigen::VectorXd q, qd;
   initialState(params_, q, qd);
+  if (hasWinch()) ends_.winch().restart(params_.deployedLength());  // its command carries on
+  deployConfigured();
   setPaperState(q, qd);
   time_ = t;
+}
+
+void CableSimulator::deployConfigured() {
+  if (!hasWinch()) return;
+  const int first = params_.winch.stored_links;
+  dynamics_.deploy(first);
+  ends_.setOutboardLength(params_.deployedLength() - params_.link_lengths[first]);
+}
+
+double CableSimulator::deployedLength() const {
+  return hasWinch() ? ends_.winch().motion().length : params_.totalLength();
+}
+
+void CableSimulator::finishWinchStep() {
+  Winch& winch = ends_.winch();
+  winch.finish(time_);
+  const EndInputs before = ends_.at(time_);
+  const double link = params_.winch.link_length;
+  if (before.winch_length <= kWinchLinkSplitAt * link && before.winch_length >= kWinchLinkMergeAt * link) return;
+  double magnitude = 0.0, outboard = ends_.outboardLength();
+  const double energy_before = dynamics_.mechanicalEnergy(x_, before, magnitude);
+  const WinchRegrid change = regridWinchLinks(dynamics_, x_, before.winch_length, params_.winch.link_length,
+                                              before.winch_speed, outboard);
+  if (change == WinchRegrid::kNone) return;
+  (change == WinchRegrid::kAdded ? links_added_ : links_removed_) += 1;
+  ends_.setOutboardLength(outboard);
+  // What the change took out of the mechanical energy (nothing when a link is added; the kink's
+  // energy when two merge) counts as dissipated, so that the balance stays closed.
+  const double energy_after = dynamics_.mechanicalEnergy(x_, ends_.at(time_), magnitude);
+  x_(StateLayout::dissipated(links())) += energy_before - energy_after;
+  regrid_energy_ += energy_before - energy_after;
+  dynamics_.followAzimuths(x_);
+  start_balance_known_ = false;
+  scheme_->forget();
 }
 
 void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
@@ -136,6 +177,11 @@ StepReport CableSimulator::step() {
   StepReport report;
   x_start_ = x_;
   const double t0 = time_;
+  if (hasWinch()) {
+    Winch& winch = ends_.winch();
+    winch.followSchedule(t0);
+    if (winch.plan(t0, dt_)) scheme_->forget();  // a new acceleration: the last stage is not this step's
+  }
   for (int pieces = 1; pieces <= kMaxSubsteps; pieces *= 2) {
     bool ok = true;
     for (int i = 0; i < pieces && ok; ++i) ok = advance(dt_ / pieces);
@@ -144,6 +190,7 @@ StepReport CableSimulator::step() {
       if (pieces > 1) ++retried_steps_;
       time_ = t0 + dt_;  // no drift from summing the pieces
       dynamics_.followAzimuths(x_);
+      if (hasWinch()) finishWinchStep();
       return report;
     }
     x_ = x_start_;
@@ -181,6 +228,10 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.work_input = x_(StateLayout::workInput(n));
   out.total_energy = out.chain.kinetic_energy + out.chain.potential_energy + out.chain.elastic_energy +
                      out.dissipated_energy - out.work_input;
+  out.first_link = firstLink();
+  out.deployed_length = deployedLength();
+  out.winch_speed = hasWinch() ? ends_.winch().motion().speed : 0.0;
+  out.line_pull = out.chain.tension(out.first_link);
 }
 
 void CableSimulator::setCurrent(const Eigen::Vector3d& current) {

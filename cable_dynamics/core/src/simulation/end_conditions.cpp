@@ -13,7 +13,8 @@ void motionAt(const MotionParams& m, double t, Eigen::Vector3d& p, Eigen::Vector
   a = worldToPaper(m.amplitude * (-w * w * std::sin(w * t)));
 }
 
-EndConditions::EndConditions(const BaseParams& base, const LoadParams& load) : base_(base), load_(load) {}
+EndConditions::EndConditions(const BaseParams& base, const LoadParams& load, const WinchParams& winch)
+    : base_(base), load_(load), has_winch_(winch.enabled), winch_(winch) {}
 
 void EndConditions::reset() {
   external_load_ = false;
@@ -37,6 +38,13 @@ EndInputs EndConditions::at(double t) const {
     motionAt(load_.motion, t, ends.target_position, ends.target_velocity, acceleration);
     ends.target_position += initial_tip_;
     if (load_.mode == LoadMode::kAnchored) ends.target_velocity.setZero();
+  }
+  if (has_winch_) {
+    const WinchMotion m = winch_.at(t);
+    ends.winch = true;
+    ends.winch_length = m.length - outboard_length_;
+    ends.winch_speed = m.speed;
+    ends.winch_acceleration = m.acceleration;
   }
   return ends;
 }

@@ -31,11 +31,15 @@ struct Stiffest {
 StableStep estimateStableStep(const CableParams& params, const LinkProperties& p) {
   Stiffest stiffest;
   const int n = p.n;
-  // Hanging tension at the top: the submerged weight of everything below.
-  const double tension = std::abs(p.gravity * (p.submerged_mass.sum() + p.load_submerged_mass));
+  // Hanging tension at the top: the submerged weight of everything below; with a winch, of the longest
+  // deployment (its per-length weight from the tip link, which never leaves the water).
+  double submerged = p.submerged_mass.sum();
+  if (params.winch.enabled) submerged = p.submerged_mass(n - 1) / p.length(n - 1) * params.winch.max_length;
+  const double tension = std::abs(p.gravity * (submerged + p.load_submerged_mass));
   for (int k = 0; k < n; ++k) {
     const std::string joint = std::to_string(k + 1);
     const double l = p.length(k), m = p.mass(k) + p.added_mass_per_length * l;
+    if (l <= 0.0) continue;  // on a winch's drum
     // Highest mode of a beaded string: 2 sqrt(T / (m l)) for links of mass m and length l.
     stiffest.consider(2.0 * std::sqrt(tension / (m * l)), "the string mode of link " + joint + " under the hanging tension");
     const double bend_inertia = p.mass(k) * l * l / 12.0;

@@ -21,6 +21,12 @@ class AzimuthTracker {
   /// Link k's horizontal direction is now (x, y) (any length > 0; the caller skips vertical links).
   void follow(int k, double x, double y);
 
+  /// Link `to` continues from link `from`'s azimuth (a link split in two at the winch).
+  void copy(int from, int to) {
+    direction_.col(to) = direction_.col(from);
+    turns_(to) = turns_(from);
+  }
+
   /// Unwrapped azimuth of link k at the last direction followed [rad].
   double reference(int k) const;
 

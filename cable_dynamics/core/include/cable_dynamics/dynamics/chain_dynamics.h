@@ -30,6 +30,7 @@ struct ChainOutputs {
   Eigen::Matrix3Xd ends;         ///< (3 x n+1) base and link far ends [m]
   Eigen::Matrix3Xd joint_force;  ///< (3 x n) force on the outboard part at joint k's base end [N]
   Eigen::VectorXd tension;       ///< (n) force along link k at its base end, + pulls towards the base [N]
+                                 ///< (0 on a winch's drum; at the base link: the line pull)
   Eigen::Vector3d load_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the load [N]
   Eigen::Vector3d base_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the base [N]
   Eigen::Vector3d coupling_force = Eigen::Vector3d::Zero();  ///< PD force of the anchor / ROV on the load [N]
@@ -44,6 +45,8 @@ class ChainDynamics {
   explicit ChainDynamics(const CableParams& params);
 
   int links() const { return model_.links(); }
+  /// The winch deploys slots [first, n) (ChainModel::deploy); between evaluations only.
+  void deploy(int first) { model_.deploy(first); }
   int stateSize() const { return StateLayout::size(model_.links()); }
   const ChainModel& model() const { return model_; }
   const LinkProperties& properties() const { return model_.properties(); }

@@ -32,7 +32,23 @@ class ChainModel {
   explicit ChainModel(const CableParams& params);
 
   int links() const { return n_; }
+  /// Per-link description; with a winch, of the cable as now deployed (the drum's slots: zero length
+  /// and mass; the winch's link: its present length).
   const LinkProperties& properties() const { return properties_; }
+
+  // The winch (docs/MODEL.md section 9): slots [0, firstLink()) are on the drum, massless and of zero
+  // length; slot firstLink() is the winch's link, whose length changes with the deployed length.
+  // Without a winch, firstLink() is 0 and link 0 keeps its configured length.
+
+  /// The first deployed slot, the link at the base.
+  int firstLink() const { return first_; }
+  /// Deploys slots [first, n): the drum's slots before it lose length and mass, the slots from it on
+  /// get their configured constants, and the base's joint springs move to slot `first`. O(n); when a
+  /// link is added or removed at the winch, not within an evaluation.
+  void deploy(int first);
+  /// Sets the length of the winch's link (slot firstLink()) [m] and every constant that follows from
+  /// it. O(1); the winch calls it for each evaluation.
+  void setWinchLinkLength(double length);
   StiffnessModel stiffnessModel() const { return properties_.stiffness_model; }
   Formulation formulation() const { return formulation_; }
   /// Any joint spring or damper at all (the paper model with none skips the joint torques).
@@ -40,6 +56,7 @@ class ChainModel {
   double fluidDensity() const { return fluid_density_; }  ///< [kg/m^3], 0 in air
   const LinkDrag& drag() const { return drag_; }
   const LoadConstants& load() const { return load_; }
+  bool hasWinch() const { return has_winch_; }
 
   /// Per-link constants, eight links a block; lanes past the last link hold a massless link of zero length.
   int blocks() const { return static_cast<int>(lanes_.size()); }
@@ -49,8 +66,14 @@ class ChainModel {
   double get(double (LinkConstants::*field)[kBlockLanes], int k) const { return (of(k).*field)[k % kBlockLanes]; }
 
  private:
+  /// Slot k's lane constants and mass properties for length `length` [m] (0: on the drum).
+  void setLinkLength(int k, double length);
+
   int n_;
-  LinkProperties properties_;
+  int first_ = 0;
+  bool has_winch_ = false;
+  LinkProperties nominal_;     ///< every slot as configured (the drum's at the length they will have)
+  LinkProperties properties_;  ///< as deployed now
   Formulation formulation_;
   bool has_springs_;
   double fluid_density_;

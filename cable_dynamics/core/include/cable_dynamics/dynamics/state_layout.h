@@ -27,6 +27,12 @@ struct EndInputs {
   bool load_coupled = false;                                    ///< PD coupling of the tip to a target
   Eigen::Vector3d target_position = Eigen::Vector3d::Zero();    ///< [m]
   Eigen::Vector3d target_velocity = Eigen::Vector3d::Zero();    ///< [m/s]
+  /// A winch pays the cable out at the base: the winch's link (ChainModel::firstLink()) has length
+  /// winch_length and grows at winch_speed, its material sliding out along its axis at that speed.
+  bool winch = false;
+  double winch_length = 0.0;        ///< [m]
+  double winch_speed = 0.0;         ///< + paying out [m/s]
+  double winch_acceleration = 0.0;  ///< [m/s^2]
 };
 
 }  // namespace cable_dynamics

@@ -127,10 +127,38 @@ struct SimulationParams {
   double duration = 10.0;          ///< default length of an offline run (cable_sim without --duration) [s]
 };
 
+/// One entry of a winch schedule (cable_sim): from `time` on, run at `speed` (pay out > 0, haul in < 0)
+/// or drive to the deployed length `length` within the winch's limits.
+struct WinchCommand {
+  double time = 0.0;       ///< [s]
+  bool to_length = false;  ///< false: `value` is a speed [m/s]; true: a target length [m]
+  double value = 0.0;
+};
+
+/// A winch at the base that pays the cable out and hauls it in (docs/MODEL.md section 9). The cable
+/// starts deployed as configured (cable.length); links are added and removed at the base as the
+/// deployed length passes whole links of the base link's configured length.
+struct WinchParams {
+  bool enabled = false;
+  double min_length = 0.0;        ///< [m], at least one link
+  double max_length = 0.0;        ///< [m], sizes every workspace at start
+  double max_speed = 1.0;         ///< [m/s]
+  double max_acceleration = 0.5;  ///< [m/s^2]
+  double speed = 0.0;             ///< commanded speed at start [m/s]
+  std::vector<WinchCommand> schedule;  ///< time-ordered commands (offline runs)
+  /// Slots [0, stored_links) are the cable still on the drum (CableParams::links counts every slot);
+  /// the configured cable.links are deployed behind them. Set by the config loader.
+  int stored_links = 0;
+  double link_length = 0.0;       ///< length of a link added at the winch [m] (the base link's configured length)
+};
+
 /// Every parameter of one cable, validated by the config loader; SI units.
 struct CableParams {
-  int links = 1;                          ///< n, number of rigid links
-  std::vector<double> link_lengths;       ///< (n) [m]
+  /// n, number of rigid links; with a winch, every slot the longest deployment needs (the first
+  /// winch.stored_links of them start on the drum).
+  int links = 1;
+  std::vector<double> link_lengths;       ///< (n) [m]; slots on the drum: the length they will have
+  WinchParams winch;
   double diameter = 0.025;                ///< outer diameter [m]
   double mass_per_length = 0.6;           ///< in air [kg/m]
   StiffnessParams stiffness;
@@ -142,8 +170,10 @@ struct CableParams {
   InitialState initial;
   SimulationParams simulation;
 
-  /// Total length [m].
+  /// Total length of every slot [m].
   double totalLength() const;
+  /// Deployed length at start [m] (totalLength() without a winch).
+  double deployedLength() const;
 };
 
 /// Quantities derived per link from CableParams; vectors have size n, index k-1 for link k.

@@ -29,6 +29,11 @@ struct SimulationSnapshot {
   double work_input = 0.0;         ///< done on the cable by the moving base and the load coupling [J]
   /// kinetic + potential + elastic + dissipated - work input: constant up to the integrator's error [J]
   double total_energy = 0.0;
+  // The winch (zero and the configured length without one).
+  int first_link = 0;            ///< the base link's slot: slots before it are on the drum
+  double deployed_length = 0.0;  ///< [m]
+  double winch_speed = 0.0;      ///< + paying out [m/s]
+  double line_pull = 0.0;        ///< tension at the winch, the base link's base end [N]
 };
 
 /// Outcome of one step.
@@ -75,6 +80,22 @@ class CableSimulator {
   /// The paper coordinates (3n) [rad] and their rates (3n) [rad/s] of the present state.
   void paperCoordinates(Eigen::VectorXd& q, Eigen::VectorXd& qd) const { dynamics_.paperCoordinates(x_, q, qd); }
 
+  /// The winch (docs/MODEL.md section 9): commands take effect from the next step, within the limits.
+  bool hasWinch() const { return ends_.hasWinch(); }
+  const Winch& winch() const { return ends_.winch(); }
+  /// Pay out (> 0) or haul in (< 0) [m/s]; replaces a target length and the schedule's last command.
+  void commandWinchSpeed(double speed) { ends_.winch().commandSpeed(speed); }
+  /// Drive to a deployed length [m] and stop there.
+  void commandWinchLength(double length) { ends_.winch().commandLength(length); }
+  /// The base link's slot (0 without a winch) and the deployed length [m].
+  int firstLink() const { return dynamics_.model().firstLink(); }
+  double deployedLength() const;
+  /// Links added and removed at the winch since reset, and the mechanical energy those changes took
+  /// out (counted as dissipated: the kink lost when two links merge) [J].
+  long linksAdded() const { return links_added_; }
+  long linksRemoved() const { return links_removed_; }
+  double regridEnergy() const { return regrid_energy_; }
+
   /// Current outputs (evaluates the dynamics at the present state).
   void snapshot(SimulationSnapshot& out);
 
@@ -107,6 +128,10 @@ class CableSimulator {
   bool advance(double h);
   /// The energy balance at the present state and time, evaluated afresh.
   EnergyBalance balanceNow();
+  /// The configured deployment: the drum's slots stowed, the winch at the configured length.
+  void deployConfigured();
+  /// After an accepted step: the winch moves on and adds or removes a link when its link leaves its band.
+  void finishWinchStep();
 
   CableParams params_;
   ChainDynamics dynamics_;
@@ -123,6 +148,8 @@ class CableSimulator {
   double largest_scale_ = 0.0;          ///< the largest mechanical magnitude seen [J]
   double energy_drift_ = 0.0;           ///< [-]
   long retried_steps_ = 0;
+  long links_added_ = 0, links_removed_ = 0;
+  double regrid_energy_ = 0.0;          ///< [J]
   Eigen::VectorXd x_, x_start_;         ///< (StateLayout::size(n)) the state, and at the step's start
   Eigen::VectorXd q_, qd_;              ///< (3n) for messages
 };

@@ -8,6 +8,7 @@
 
 #include "cable_dynamics/dynamics/state_layout.h"
 #include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/simulation/winch.h"
 
 namespace cable_dynamics {
 
@@ -19,13 +20,21 @@ void motionAt(const MotionParams& motion, double t, Eigen::Vector3d& position, E
 /// The ends' inputs over time: the configured motions until an external target replaces them.
 class EndConditions {
  public:
-  EndConditions(const BaseParams& base, const LoadParams& load);
+  EndConditions(const BaseParams& base, const LoadParams& load, const WinchParams& winch);
 
   /// The inputs at time t [s] (paper frame).
   EndInputs at(double t) const;
 
   /// Back to the configured motions (external targets dropped).
   void reset();
+
+  /// The winch at the base (when configured), which sets the deployed length.
+  bool hasWinch() const { return has_winch_; }
+  Winch& winch() { return winch_; }
+  const Winch& winch() const { return winch_; }
+  /// The deployed cable beyond the winch's own link [m]: the winch's link is the rest of the deployed length.
+  void setOutboardLength(double length) { outboard_length_ = length; }
+  double outboardLength() const { return outboard_length_; }
   /// The tip's start position (paper frame) [m], which the load's configured motion is relative to.
   void setInitialTip(const Eigen::Vector3d& initial_tip) { initial_tip_ = initial_tip; }
   /// External load target (world axes) [m], [m/s]; replaces the configured motion until reset().
@@ -38,6 +47,9 @@ class EndConditions {
   LoadParams load_;
   Eigen::Vector3d initial_tip_ = Eigen::Vector3d::Zero();  ///< paper frame [m]
   bool external_load_ = false, external_base_ = false;
+  bool has_winch_ = false;
+  Winch winch_;
+  double outboard_length_ = 0.0;  ///< [m]
   // External targets, converted to the paper frame once [m], [m/s].
   Eigen::Vector3d load_position_ = Eigen::Vector3d::Zero(), load_velocity_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d base_position_ = Eigen::Vector3d::Zero(), base_velocity_ = Eigen::Vector3d::Zero();
