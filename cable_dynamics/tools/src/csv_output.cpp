@@ -18,7 +18,7 @@ std::vector<double> rowValues(const SimulationSnapshot& s) {
     for (int c = 0; c < 3; ++c) v.push_back(s.chain.ends(c, k));
   }
   for (int k = 0; k < n; ++k) v.push_back(s.chain.tension(k));
-  v.push_back(s.chain.tension(0));
+  v.push_back(s.line_pull);  // the tension at the top of the deployed cable
   for (int c = 0; c < 3; ++c) v.push_back(s.chain.load_force(c));
   for (int c = 0; c < 3; ++c) v.push_back(s.chain.base_force(c));
   v.push_back(s.chain.kinetic_energy);
@@ -28,6 +28,9 @@ std::vector<double> rowValues(const SimulationSnapshot& s) {
   v.push_back(s.work_input);
   v.push_back(s.total_energy);
   for (int c = 0; c < 3; ++c) v.push_back(s.chain.ends(c, 0));  // the base (it may move)
+  v.push_back(s.deployed_length);
+  v.push_back(s.winch_speed);
+  v.push_back(static_cast<double>(n - s.first_link));
   return v;
 }
 
@@ -43,7 +46,8 @@ std::vector<std::string> csvColumns(int links) {
   for (int k = 1; k <= links; ++k) c.push_back("tension" + std::to_string(k));
   for (const char* name : {"top_tension", "load_force_x", "load_force_y", "load_force_z", "base_force_x",
                            "base_force_y", "base_force_z", "kinetic_energy", "potential_energy", "elastic_energy",
-                           "dissipated_energy", "work_input", "total_energy", "base_x", "base_y", "base_z"}) {
+                           "dissipated_energy", "work_input", "total_energy", "base_x", "base_y", "base_z",
+                           "deployed_length", "winch_speed", "deployed_links"}) {
     c.push_back(name);
   }
   return c;
