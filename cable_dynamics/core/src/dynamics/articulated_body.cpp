@@ -41,7 +41,7 @@ inline void normalPlaneBasis(const Vec3& u, Vec3& e1, Vec3& e2) {
 /// centripetal beta = u'' at zero angular acceleration and the gyroscopic torque; the known
 /// acceleration; minus the external forces). Every link alike: the loop runs over a block's lanes.
 EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainModel& model, LinkBlocks& links) {
-  for (int b = 0; b < links.blocks(); ++b) {
+  for (int b = model.firstBlock(); b < links.blocks(); ++b) {
     const LinkConstants& c = model.block(b);
     LinkBlock& block = links.block(b);
     CABLE_LANE_LOOP
@@ -162,7 +162,7 @@ EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links)
 /// On vectors again, what follows from d_k: angular accelerations and the added-mass power [W].
 EIGEN_ALWAYS_INLINE double accelerationPass(const ChainModel& model, LinkBlocks& links) {
   double power[kBlockLanes] = {};
-  for (int b = 0; b < links.blocks(); ++b) {
+  for (int b = model.firstBlock(); b < links.blocks(); ++b) {
     const LinkConstants& c = model.block(b);
     LinkBlock& block = links.block(b);
     CABLE_LANE_LOOP

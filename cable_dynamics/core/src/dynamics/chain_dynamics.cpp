@@ -17,12 +17,13 @@ namespace {
 
 /// true when every entry is finite: one vectorized sum instead of a test per entry (a NaN or an
 /// infinity anywhere makes the sum NaN or infinite; so would a sum beyond 1e308, no valid state either).
-inline bool allFinite(const Eigen::VectorXd& v) { return std::isfinite(v.sum()); }
+template <typename Vector>
+inline bool allFinite(const Vector& v) { return std::isfinite(v.sum()); }
 
 /// After a solve: every LinkBlock::omega_rate finite (one vectorized sum; the padding lanes hold zeros).
-CABLE_HOT_PATH bool finiteAngularAccelerations(const LinkBlocks& links) {
+CABLE_HOT_PATH bool finiteAngularAccelerations(const LinkBlocks& links, int first_block) {
   double sum[kBlockLanes] = {};
-  for (int b = 0; b < links.blocks(); ++b) {
+  for (int b = first_block; b < links.blocks(); ++b) {
     const Lanes3& rate = links.block(b).omega_rate;
     for (int i = 0; i < kBlockLanes; ++i) sum[i] += rate.x[i] + rate.y[i] + rate.z[i];
   }
@@ -56,10 +57,12 @@ ChainDynamics::ChainDynamics(const CableParams& params) : model_(params), data_(
   if (params.simulation.integrator == Integrator::kSemiImplicit) data_.dense.allocate(model_.links());
 }
 
-void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) { cable_dynamics::followAzimuths(links(), x, data_.azimuths); }
+void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
+  cable_dynamics::followAzimuths(links(), x, data_.azimuths, model_.firstLink());
+}
 
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
-  if (!allFinite(x)) return false;
+  if (!allFinite(x.tail(StateLayout::moving(links(), model_.firstLink())))) return false;  // what the passes read
   if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
   computeKinematics(model_, data_, x, ends);
   computeExternalLoads(model_, data_, ends);
@@ -69,7 +72,7 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   } else {
     if (!solveDense(model_, data_)) return false;  // its workspace: allocated by ChainData for this formulation
   }
-  if (!finiteAngularAccelerations(data_.links)) return false;
+  if (!finiteAngularAccelerations(data_.links, model_.firstBlock())) return false;
   // The base does work through the force it holds the base link's end with, at that end's material
   // velocity (with a winch, the paid-out cable's), and the paid-out cable brings its own energy.
   const int first = model_.firstLink();
@@ -88,7 +91,9 @@ bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, 
 
 CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
   const int n = links(), first = model_.firstLink();
-  xdot.head(StateLayout::axis(first)).setZero();  // the drum's slots (a winch) stay as they are
+  // The drum's slots (a winch) stay as they are: their rates are zero. Slots leave the cable one at a
+  // time, each at a step's end, so only the last one stowed may still hold rates in this buffer.
+  if (first > 0) xdot.segment<StateLayout::kPerLink>(StateLayout::axis(first - 1)).setZero();
   for (int k = first; k < n; ++k) {
     const LinkBlock& block = data_.links.of(k);
     const int i = LinkBlocks::lane(k);
@@ -107,11 +112,14 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   out.omega_rate.setZero(3 * n);  // the drum's slots stay at rest
   for (int k = model_.firstLink(); k < n; ++k) out.omega_rate.segment<3>(3 * k) = l.get(&LinkBlock::omega_rate, k);
   out.ends.resize(3, n + 1);
-  for (int k = 0; k < n; ++k) out.ends.col(k) = l.get(&LinkBlock::base_pos, k);
+  const int first = model_.firstLink();
+  for (int k = 0; k < first; ++k) out.ends.col(k) = l.get(&LinkBlock::base_pos, first);  // the drum's, at the base
+  for (int k = first; k < n; ++k) out.ends.col(k) = l.get(&LinkBlock::base_pos, k);
   out.ends.col(n) = data_.tip_position;
   out.joint_force = data_.joint_force;
   out.tension.resize(n);
-  for (int k = 0; k < n; ++k) out.tension(k) = -data_.joint_force.col(k).dot(l.get(&LinkBlock::u, k));
+  out.tension.setZero();
+  for (int k = first; k < n; ++k) out.tension(k) = -data_.joint_force.col(k).dot(l.get(&LinkBlock::u, k));
   out.load_force = data_.load_force;
   out.base_force = -data_.joint_force.col(model_.firstLink());
   out.coupling_force = data_.coupling;

@@ -13,7 +13,7 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
   const bool uniform = current_field.uniform();
   const Vec3 current = toVec3(current_field.uniformValue());
   double drag_power = 0.0;
-  for (int b = 0; b < data.links.blocks(); ++b) {
+  for (int b = model.firstBlock(); b < data.links.blocks(); ++b) {
     const LinkConstants& constants = model.block(b);
     LinkBlock& block = data.links.block(b);
     // Submerged weight, uniform along the link: total and first moment about the base end.

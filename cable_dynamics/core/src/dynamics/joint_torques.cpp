@@ -89,7 +89,7 @@ void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::
     bendingSpringTorques(model, data, x);
   }
   if (!with_dampers) data.damping_torque.setZero();
-  for (int k = 0; k < model.links(); ++k) {
+  for (int k = model.firstLink(); k < model.links(); ++k) {
     data.links.set(&LinkBlock::torque, k, data.spring_torque.col(k) + data.damping_torque.col(k));
   }
 }
@@ -97,7 +97,7 @@ void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::
 double damperPower(const ChainModel& model, const ChainData& data) {
   if (model.stiffnessModel() == StiffnessModel::kPaper && !model.hasSprings()) return 0.0;  // no damper at all
   double power = 0.0;
-  for (int k = 0; k < model.links(); ++k) power += data.damping_torque.col(k).dot(data.links.get(&LinkBlock::omega, k));
+  for (int k = model.firstLink(); k < model.links(); ++k) power += data.damping_torque.col(k).dot(data.links.get(&LinkBlock::omega, k));
   return power;
 }
 

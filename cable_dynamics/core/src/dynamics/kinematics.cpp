@@ -8,20 +8,20 @@ namespace cable_dynamics {
 
 CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x,
                                       const EndInputs& ends) {
-  const int n = model.links();
+  const int n = model.links(), first = model.firstLink();
   LinkBlocks& links = data.links;
   // Three passes, each over the whole chain. The state holds a link's numbers together and a block
   // holds them by kind, so the first pass copies them one by one; a whole pass lies between those
   // scalar stores and the vector loads of the second (a vector load right after the scalar stores
   // it spans would wait for them to reach the cache).
-  for (int k = 0; k < n; ++k) {
+  for (int k = first; k < n; ++k) {
     LinkBlock& block = links.of(k);
     const int i = LinkBlocks::lane(k);
     const double* link = x.data() + StateLayout::axis(k);
     block.u.set(i, {link[0], link[1], link[2]});
     block.omega.set(i, {link[4], link[5], link[6]});
   }
-  for (int b = 0; b < links.blocks(); ++b) {
+  for (int b = model.firstBlock(); b < links.blocks(); ++b) {
     LinkBlock& block = links.block(b);
     for (int i = 0; i < kBlockLanes; ++i) {
       // Links are unit vectors up to the integrator's drift: use the normalized axis.
@@ -40,9 +40,8 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
   // the base). A winch pays the base link's material out along its axis u at the speed v: each of its
   // points moves by v u more and accelerates by v' u + 2 v u' more (docs/MODEL.md section 9), and the
   // links beyond it with them.
-  const int first = model.firstLink();
   Vec3 pos = toVec3(ends.base_position), vel = toVec3(ends.base_velocity), acc = toVec3(ends.base_acceleration);
-  for (int k = 0; k < first; ++k) {
+  for (int k = model.firstBlock() * kBlockLanes; k < first; ++k) {  // the idle lanes the block loops read
     LinkBlock& block = links.of(k);
     const int i = LinkBlocks::lane(k);
     block.base_pos.set(i, pos);

@@ -58,8 +58,8 @@ void stateFromPaper(int links, const Eigen::VectorXd& q, const Eigen::VectorXd& 
   }
 }
 
-void followAzimuths(int links, const Eigen::VectorXd& x, AzimuthTracker& azimuths) {
-  for (int k = 0; k < links; ++k) {
+void followAzimuths(int links, const Eigen::VectorXd& x, AzimuthTracker& azimuths, int first) {
+  for (int k = first; k < links; ++k) {
     const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k));
     // Straight down the azimuth is undefined: keep the previous one (as paperCoordinates() does).
     const double horizontal_squared = axis.x() * axis.x() + axis.y() * axis.y();

@@ -152,8 +152,8 @@ bool CableSimulator::advance(double h) {
   start_balance_known_ = false;
   if (!scheme_->advance(dynamics_, ends_, time_, h, x_)) return false;
   time_ += h;
-  if (!projectAxes(x_, n)) return false;
-  if (judgeStep(x_, n, limits_) != StepVerdict::kAccepted) return false;
+  if (!projectAxes(x_, n, firstLink())) return false;  // the links on a winch's drum do not move
+  if (judgeStep(x_, n, limits_, firstLink()) != StepVerdict::kAccepted) return false;
   if (!scheme_->balancesEnergy()) return true;
   // The energy after the step comes from an evaluation at the new state (which RK4 keeps as the next
   // step's first stage). A state where x' is not finite fails here, not one step later.
@@ -175,7 +175,8 @@ bool CableSimulator::advance(double h) {
 
 StepReport CableSimulator::step() {
   StepReport report;
-  x_start_ = x_;
+  const int moving = StateLayout::moving(links(), firstLink());  // a winch's drum slots do not change in a step
+  x_start_.tail(moving) = x_.tail(moving);
   const double t0 = time_;
   if (hasWinch()) {
     Winch& winch = ends_.winch();
@@ -193,7 +194,7 @@ StepReport CableSimulator::step() {
       if (hasWinch()) finishWinchStep();
       return report;
     }
-    x_ = x_start_;
+    x_.tail(moving) = x_start_.tail(moving);
     time_ = t0;
     start_balance_known_ = false;
     scheme_->forget();

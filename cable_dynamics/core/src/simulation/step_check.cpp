@@ -22,8 +22,8 @@ StepLimits stepLimits(double shortest_link, double gravity) {
   return limits;
 }
 
-bool projectAxes(Eigen::VectorXd& x, int n) {
-  for (int k = 0; k < n; ++k) {
+bool projectAxes(Eigen::VectorXd& x, int n, int first) {
+  for (int k = first; k < n; ++k) {
     auto axis = x.segment<3>(StateLayout::axis(k));
     const double norm = std::sqrt(axis.squaredNorm());
     if (!std::isfinite(norm) || norm < 0.5) return false;
@@ -32,10 +32,11 @@ bool projectAxes(Eigen::VectorXd& x, int n) {
   return true;
 }
 
-StepVerdict judgeStep(const Eigen::VectorXd& x, int n, const StepLimits& limits) {
-  if (!std::isfinite(x.sum())) return StepVerdict::kNotFinite;  // one sum: any NaN or infinity shows
+StepVerdict judgeStep(const Eigen::VectorXd& x, int n, const StepLimits& limits, int first) {
+  // One sum: any NaN or infinity shows.
+  if (!std::isfinite(x.tail(StateLayout::moving(n, first)).sum())) return StepVerdict::kNotFinite;
   const double limit_squared = limits.max_angular_velocity * limits.max_angular_velocity;
-  for (int k = 0; k < n; ++k) {
+  for (int k = first; k < n; ++k) {
     if (!(x.segment<3>(StateLayout::omega(k)).squaredNorm() < limit_squared)) return StepVerdict::kRunawaySpin;
   }
   return StepVerdict::kAccepted;

@@ -42,6 +42,8 @@ class ChainModel {
 
   /// The first deployed slot, the link at the base.
   int firstLink() const { return first_; }
+  /// The block that holds it: the loops over blocks start there (the drum's blocks before it are idle).
+  int firstBlock() const { return first_ / kBlockLanes; }
   /// Deploys slots [first, n): the drum's slots before it lose length and mass, the slots from it on
   /// get their configured constants, and the base's joint springs move to slot `first`. O(n); when a
   /// link is added or removed at the winch, not within an evaluation.

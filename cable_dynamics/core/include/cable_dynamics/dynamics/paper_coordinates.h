@@ -20,6 +20,6 @@ void paperCoordinates(int links, const AzimuthTracker& azimuths, const Eigen::Ve
 void stateFromPaper(int links, const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x);
 
 /// Moves the tracker to the state's azimuths (unwrapped against it), after each accepted step.
-void followAzimuths(int links, const Eigen::VectorXd& x, AzimuthTracker& azimuths);
+void followAzimuths(int links, const Eigen::VectorXd& x, AzimuthTracker& azimuths, int first = 0);
 
 }  // namespace cable_dynamics

@@ -17,6 +17,9 @@ struct StateLayout {
   static int dissipated(int n) { return kPerLink * n; }  ///< energy taken out by drag, added mass, dampers [J]
   static int workInput(int n) { return kPerLink * n + 1; }  ///< work done by the moving ends [J]
   static int size(int n) { return kPerLink * n + 2; }
+  /// The part of x that moves when slots [0, first) are on a winch's drum: everything from link
+  /// `first` on, the accumulators included (the tail of x, of this many entries).
+  static int moving(int n, int first) { return size(n) - kPerLink * first; }
 };
 
 /// What drives the ends during one evaluation (paper frame, z down, origin at the base's rest position).

@@ -43,14 +43,14 @@ StepLimits stepLimits(double shortest_link, double gravity);
 
 /// Links' axes back onto the unit sphere after a step (the schemes step u as three numbers). Returns
 /// false, changing nothing further, at an axis that is not finite or shorter than 1/2 (diverged).
-bool projectAxes(Eigen::VectorXd& x, int links);
+bool projectAxes(Eigen::VectorXd& x, int links, int first = 0);
 
 /// The verdict on the state x a step reached. With `before` and `after` (balancesEnergy() schemes), also
 /// whether it created energy: the growth of the balance against tolerance x scale, with the scale the
 /// larger mechanical magnitude of the two states plus what this step dissipated and put in. The scale
 /// deliberately leaves out the accumulated dissipated energy and work: they grow with the run, and with
 /// any error the run has made, so a tolerance relative to them would loosen as a run goes wrong.
-StepVerdict judgeStep(const Eigen::VectorXd& x, int links, const StepLimits& limits);
+StepVerdict judgeStep(const Eigen::VectorXd& x, int links, const StepLimits& limits, int first = 0);
 StepVerdict judgeEnergy(const EnergyBalance& before, const EnergyBalance& after, const StepLimits& limits);
 
 /// Text for a verdict ("accepted", "not finite", ...).
