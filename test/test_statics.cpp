@@ -86,15 +86,16 @@ Catenary catenary(double length, double span, double drop, double w) {
 }  // namespace
 
 TEST(Statics, CatenaryBetweenTwoPoints) {
-  // A limp chain in air, L = 100 m, its tip held 80 m across and 20 m below the base by a 1e8 N/m
-  // coupling (a stretch of ~1e-5 m at these tensions, 1e-7 of the length). The discrete chain is the
+  // A limp chain in air, L = 100 m, its tip held 80 m across and 20 m below the base by a 1e7 N/m
+  // coupling (a stretch of ~3e-5 m at these tensions, 3e-7 of the length; stiffer, the round-off of
+  // the tip's position, 1e-14 m, times k_c reaches the 1e-9 tolerance). The discrete chain is the
   // polygon inscribed in the catenary with its weight lumped... at the links' centres: it converges to
   // the catenary at second order in 1/n.
   const double length = 100.0, span = 80.0, drop = 20.0, w = kMassPerLength * kGravity;
   const Catenary exact = catenary(length, span, drop, w);
-  std::vector<double> worst;
+  std::vector<double> worst, tension_errors;
   for (int n : {25, 50, 100}) {
-    ChainDynamics chain(cable(length, n, {"fluid.density=0", "load={mass: 0, mode: anchored, coupling: {stiffness: 1e8}}"}));
+    ChainDynamics chain(cable(length, n, {"fluid.density=0", "load={mass: 0, mode: anchored, coupling: {stiffness: 1e7}}"}));
     StaticProblem problem;
     problem.tip_coupled = true;
     problem.target_position = Eigen::Vector3d(span, 0.0, drop);
@@ -104,7 +105,7 @@ TEST(Statics, CatenaryBetweenTwoPoints) {
     for (int k = 0; k < n; ++k) nodes.col(k + 1) = nodes.col(k) + chain.properties().length(k) * s.axes.col(k);
     const double lowest = nodes.row(2).maxCoeff();  // paper z is depth [m]
     const double first = s.joint_force.col(0).norm();  // the base's reaction = the tension there [N]
-    const double second = (s.tip_position - problem.target_position).norm() * 1e8;  // the coupling's pull [N]
+    const double second = (s.tip_position - problem.target_position).norm() * 1e7;  // the coupling's pull [N]
     const double e_first = first / exact.tension_first - 1.0, e_second = second / exact.tension_second - 1.0;
     const double e_lowest = lowest / exact.lowest_depth - 1.0;
     std::cout << std::setprecision(6) << "catenary n = " << n << ": T_base " << first << " N (exact " << exact.tension_first
@@ -112,15 +113,19 @@ TEST(Statics, CatenaryBetweenTwoPoints) {
               << 100 * e_second << " %), lowest depth " << lowest << " m (exact " << exact.lowest_depth << ", error "
               << 100 * e_lowest << " %), tension(0) along link 1 " << s.tension(0) << " N\n";
     worst.push_back(std::max({std::abs(e_first), std::abs(e_second), std::abs(e_lowest)}));
+    tension_errors.push_back(std::abs(e_first));
     if (n == 50) {
       EXPECT_LT(worst.back(), 0.005);
     }
     EXPECT_LT(restAcceleration(chain, s, problem), 1e-6);
   }
-  std::cout << "catenary: worst error ratios n 25->50 " << worst[0] / worst[1] << ", 50->100 " << worst[1] / worst[2]
-            << " (4 at second order)\n";
-  EXPECT_GT(worst[0] / worst[1], 3.0);
-  EXPECT_GT(worst[1] / worst[2], 3.0);
+  // The end tensions converge cleanly at second order; the lowest node samples the continuous lowest
+  // point, so its error changes sign (measured -0.047 %, +0.0099 %, -0.0012 %) and is only bounded.
+  std::cout << "catenary: base tension error ratios n 25->50 " << tension_errors[0] / tension_errors[1] << ", 50->100 "
+            << tension_errors[1] / tension_errors[2] << " (4 at second order)\n";
+  EXPECT_NEAR(tension_errors[0] / tension_errors[1], 4.0, 0.2);
+  EXPECT_NEAR(tension_errors[1] / tension_errors[2], 4.0, 0.2);
+  EXPECT_LT(worst[2], worst[0]);
 }
 
 TEST(Statics, FreeTipInACurrentBalancesTheTotalForce) {
@@ -171,8 +176,10 @@ TEST(Statics, HeavyLoadTopAngleMatchesAStraightCable) {
   const double reaction = std::atan2(std::hypot(s.joint_force(0, 0), s.joint_force(1, 0)), -s.joint_force(2, 0));
   std::cout << "heavy load: top link at " << top << " rad, base reaction at " << reaction << " rad, straight cable "
             << theta << " rad (error " << 100 * (reaction / theta - 1) << " %)\n";
+  // The top link itself lies along the mean of the tension over its length (its own drag and weight
+  // turn the tension by F_0 / 2 across it): a first-order (1/n) offset from the tangent at the base,
+  // 1.2 % here at n = 25, which is why the angle compared is the reaction's.
   EXPECT_NEAR(reaction / theta, 1.0, 0.005);
-  EXPECT_NEAR(top / theta, 1.0, 0.005);
 }
 
 TEST(Statics, HorizontalCantileverMatchesBeamTheory) {
@@ -216,7 +223,7 @@ TEST(Statics, CoupledTipInACurrentIsAnEquilibriumOfTheDynamics) {
   // The default cable anchored (default coupling, 2e4 N/m) 30 m across and 35 m down, in a depth
   // profile of current: the limp shape there, checked against the dynamics.
   ChainDynamics chain(loadConfigFile(std::string(CABLE_CONFIG_DIR) + "/default.yaml",
-                                     {"load.mode=anchored", "fluid.current_profile=[[0, 0.5, 0.1, 0], [40, 0.1, 0, 0]]"}));
+                                     {"load.mode=anchored", "fluid.current=[0, 0, 0]", "fluid.current_profile=[[0, 0.5, 0.1, 0], [40, 0.1, 0, 0]]"}));
   StaticProblem problem;
   problem.tip_coupled = true;
   problem.target_position = Eigen::Vector3d(30.0, 0.0, 35.0);

@@ -116,9 +116,11 @@ StaticSolution solveStatics(const ChainModel& model, const CurrentField& current
   bool ok = false;
   if (!eq.hasBendSprings()) {
     // Limp: the sweep is the answer up to the drag's fixed points and a profile's depths; Newton polishes.
-    limpStart(eq, s, why);
+    std::string start_why;
+    const bool started = limpStart(eq, s, start_why);
     ok = newton.solve(s, options.tolerance, options.max_iterations, taken, out.residual, why);
     out.iterations = taken;
+    if (!ok && !started) why += " (from a poor start: " + start_why + ")";
   } else {
     // Springs: a free tip starts straight along the clamp (the small-deflection answer's neighbour), a
     // coupled one from the limp chain that meets the target; if Newton stalls there, ramp the springs up.

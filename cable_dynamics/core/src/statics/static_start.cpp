@@ -38,8 +38,10 @@ void straightStart(const StaticEquations& eq, const Eigen::Vector3d& direction, 
 void sweepLimp(const StaticEquations& eq, const Eigen::Vector3d& pull, StaticState& s) {
   const int m = eq.links();
   // Uniform current: the loads do not depend on depth, one pass is exact. A profile: the depths of
-  // the previous pass, a few times.
-  const int passes = eq.uniformCurrent() ? 1 : 4;
+  // the previous pass, until the tip stops moving (a fixed point: the drag's depth gradient is weak
+  // against the tension that carries it).
+  const int passes = eq.uniformCurrent() ? 1 : 100;
+  Eigen::Vector3d last_tip = eq.tip(s);
   for (int pass = 0; pass < passes; ++pass) {
     Eigen::Vector3d next = -(eq.loadForceFree(eq.tip(s)) + pull), f, n;
     for (int i = m - 1; i >= 0; --i) {
@@ -62,6 +64,9 @@ void sweepLimp(const StaticEquations& eq, const Eigen::Vector3d& pull, StaticSta
       next = s.force.col(i);
     }
     basesFromAxes(eq, s);
+    const Eigen::Vector3d tip = eq.tip(s);
+    if ((tip - last_tip).norm() < 1e-15 * eq.deployedLength()) break;
+    last_tip = tip;
   }
 }
 
