@@ -130,7 +130,7 @@ StaticSolution solveStatics(const ChainModel& model, const CurrentField& current
       statics::straightStart(eq, eq.clampAxis(), s);
     }
     ok = newton.solve(s, options.tolerance, options.max_iterations, taken, out.residual, why);
-    out.iterations = taken;
+    out.iterations += taken;
     if (!ok) {
       eq.setStiffnessScale(0.0);
       limpStart(eq, s, why);
