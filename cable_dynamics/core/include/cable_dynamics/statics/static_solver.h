@@ -1,0 +1,73 @@
+#pragma once
+/// \file
+/// \brief Static equilibrium of the cable: the rest shape whose every link has zero angular
+///        acceleration under the same loads the dynamics apply (weight, buoyancy, the Morison drag of a
+///        steady current, the load, its coupling spring, the bending model's joint springs).
+///
+/// Method (static_solver.cpp; docs/MODEL.md section 7): Newton's method in maximal coordinates, O(n)
+/// work per iteration. Per deployed link k the unknowns are z_k = (J_k (3), theta_k (2), p_k (3)):
+/// J_k the force the inboard part exerts on everything outboard of link k's base end [N] (ChainData's
+/// joint force), theta_k a small rotation of the unit axis u_k in its normal plane [rad] and p_k its
+/// base end [m]. Per link the equations are
+///   force balance        J_k - J_{k+1} + F_k(u_k, p_k) = 0                               (3, [N])
+///   moment about p_k     u_k x (N_k - l_k J_{k+1}) + tau_k(u_{k-1}, u_k, u_{k+1}) = 0    (2, [N m])
+///   chain closure        p_k - p_{k-1} - l_{k-1} u_{k-1} = 0   (p_0 = the base)          (3, [m])
+/// with F_k, N_k the external force on the link and its first moment about the base end, tau_k the
+/// joint springs' torque, and past the last link J_n = -F_load(p_tip), the load's weight, drag and
+/// coupling spring. The Jacobian is block tridiagonal (8 x 8 blocks), built by central differences
+/// block by block and solved by block LU (block Thomas), with a backtracking line search on the
+/// residual norm. Starting guess: the limp chain swept from the tip (exact without springs); with a
+/// coupled tip the tip force of that sweep is found first by a 3-unknown Newton (shooting) so that the
+/// tip meets the coupling spring; with springs and a free tip the straight cable along the clamp. When
+/// Newton stalls, continuation on the spring stiffness.
+///
+/// Convergence: max over links of |force residual| / F, |moment residual| / (F l_k) and
+/// |closure residual| / l_k below `tolerance`, where F [N] is the sum of the magnitudes of every
+/// external force (each link's weight and drag, the load's weight, drag and coupling force) at the
+/// iterate. Frame: the paper's, z down.
+
+#include <string>
+
+#include <Eigen/Core>
+
+#include "cable_dynamics/dynamics/chain_model.h"
+#include "cable_dynamics/dynamics/fluid.h"
+
+namespace cable_dynamics {
+
+/// What holds the ends (paper frame, z down, origin at the base's rest position).
+struct StaticProblem {
+  Eigen::Vector3d base_position = Eigen::Vector3d::Zero();    ///< [m]
+  bool tip_coupled = false;  ///< load modes anchored / attached: the PD coupling spring to the target
+  Eigen::Vector3d target_position = Eigen::Vector3d::Zero();  ///< [m]
+  /// Links [first_link, n) are deployed, the first of them leaving the base (and its clamp); the
+  /// others are not part of the problem (a winch's drum). 0 = all.
+  int first_link = 0;
+};
+
+struct StaticOptions {
+  double tolerance = 1e-9;  ///< relative residual (see the file comment)
+  int max_iterations = 100; ///< Newton iterations, over all continuation steps
+};
+
+struct StaticSolution {
+  bool converged = false;
+  int iterations = 0;       ///< Newton iterations taken (the starting guess's sweeps not counted)
+  double residual = 0.0;    ///< relative residual reached (see the file comment)
+  std::string message;      ///< why not, when not converged; empty otherwise
+  Eigen::Matrix3Xd axes;    ///< (3 x n) unit axes, paper frame; (0, 0, 1) for links before first_link
+  Eigen::VectorXd twists;   ///< (n) sigma_k [rad]: every joint's twist zero (0 before first_link)
+  Eigen::VectorXd tension;  ///< (n) axial force at each link's base end, + pulling toward the base [N]
+  Eigen::Matrix3Xd joint_force;  ///< (3 x n) force on the outboard part at each link's base end [N]
+  Eigen::Vector3d tip_position = Eigen::Vector3d::Zero();  ///< [m]
+};
+
+/// Solves for the static equilibrium. Supports the bending stiffness model and a limp cable (either
+/// model with no springs); the paper model's springs act on the paper angles, whose azimuth and
+/// torsion terms have no rest shape off the vertical: refused with a message. Not converged, with a
+/// message, when a coupled target lies farther from the base than the deployed cable is long (the
+/// coupling spring stands in for a rigid hold, which could not reach it).
+StaticSolution solveStatics(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
+                            const StaticOptions& options = {});
+
+}  // namespace cable_dynamics

@@ -1,0 +1,106 @@
+#include "static_equations.h"
+
+#include <cmath>
+
+#include "cable_dynamics/dynamics/joint_geometry.h"
+
+namespace cable_dynamics {
+namespace statics {
+
+StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& current, const StaticProblem& problem)
+    : model_(model),
+      current_(current),
+      problem_(problem),
+      first_(problem.first_link),
+      m_(model.links() - problem.first_link),
+      length_(m_),
+      weight_(m_),
+      bend_stiffness_(m_) {
+  const LinkProperties& p = model.properties();
+  const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
+  for (int i = 0; i < m_; ++i) {
+    const int k = first_ + i;
+    length_(i) = model.get(&LinkConstants::length, k);
+    weight_(i) = model.get(&LinkConstants::weight, k);
+    // A winch pays out from the drum: the first deployed link leaves the base's clamp, with the spring of
+    // the joint it has in the model.
+    bend_stiffness_(i) = bending ? p.stiffness_elevation(k) : 0.0;
+  }
+  has_bend_ = (bend_stiffness_.array() > 0.0).any();
+  in_water_ = model.fluidDensity() > 0.0;
+  coupling_stiffness_ = problem.tip_coupled ? model.load().coupling_stiffness : 0.0;
+  clamp_axis_ = p.clamp_axis;
+}
+
+void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,
+                                Eigen::Vector3d& moment) const {
+  const double l = length_(i), w = weight_(i);
+  force = Eigen::Vector3d(0.0, 0.0, w);
+  moment = Eigen::Vector3d(0.0, 0.0, 0.5 * l * w);
+  if (!in_water_) return;
+  // The same quadrature as the dynamics, at zero velocity: the relative velocity is the current alone.
+  Eigen::Vector3d drag_force, drag_moment;
+  model_.drag().pointwise(current_, l, p, Eigen::Vector3d::Zero(), u, Eigen::Vector3d::Zero(), drag_force, drag_moment);
+  force += drag_force;
+  moment += drag_moment;
+}
+
+Eigen::Vector3d StaticEquations::loadForceFree(const Eigen::Vector3d& tip) const {
+  const LoadConstants& load = model_.load();
+  Eigen::Vector3d f(0.0, 0.0, load.weight);
+  if (in_water_ && load.drag_area > 0.0) {
+    const Eigen::Vector3d c = current_.at(tip.z());  // [m/s]
+    f += 0.5 * model_.fluidDensity() * load.drag_area * c.norm() * c;
+  }
+  return f;
+}
+
+Eigen::Vector3d StaticEquations::couplingForce(const Eigen::Vector3d& tip) const {
+  if (!problem_.tip_coupled) return Eigen::Vector3d::Zero();
+  return -coupling_stiffness_ * (tip - problem_.target_position);  // the damper is zero at rest
+}
+
+Eigen::Vector3d StaticEquations::outboardForce(const StaticState& s, int i) const {
+  if (i + 1 < m_) return s.force.col(i + 1);
+  const Eigen::Vector3d t = tip(s);
+  return -(loadForceFree(t) + couplingForce(t));  // the load in equilibrium: J_n + F_load = 0
+}
+
+Eigen::Vector3d StaticEquations::bendTorque(int i, const Eigen::Vector3d& prev, const Eigen::Vector3d& axis) const {
+  const double k = stiffness_scale_ * bend_stiffness_(i);
+  if (k == 0.0) return Eigen::Vector3d::Zero();
+  // As joint_torques.cpp: V = 1/2 k beta^2 gives -k beta/sin(beta) (prev x u) on link i.
+  const Eigen::Vector3d cross = prev.cross(axis);
+  const double sine = cross.norm(), bend = std::atan2(sine, prev.dot(axis));
+  return -k * bendOverSine(bend, sine) * cross;
+}
+
+void StaticEquations::residual(const StaticState& s, int i, LinkResidual& r) const {
+  const Eigen::Vector3d u = s.axis.col(i), p = s.base.col(i);
+  Eigen::Vector3d f, n;
+  linkLoads(i, u, p, f, n);
+  const Eigen::Vector3d next = outboardForce(s, i);
+  r.force = s.force.col(i) - next + f;
+  // Joint i (from link i-1 or the clamp) and joint i+1 (to link i+1); the twists are zero, so only the
+  // bend springs remain, and both torques are normal to u_i.
+  Eigen::Vector3d torque = bendTorque(i, i > 0 ? Eigen::Vector3d(s.axis.col(i - 1)) : clamp_axis_, u);
+  if (i + 1 < m_) torque -= bendTorque(i + 1, u, s.axis.col(i + 1));
+  r.moment = u.cross(n - length_(i) * next) + torque;
+  r.closure = i > 0 ? Eigen::Vector3d(p - s.base.col(i - 1) - length_(i - 1) * s.axis.col(i - 1))
+                    : Eigen::Vector3d(p - problem_.base_position);
+}
+
+double StaticEquations::forceScale(const StaticState& s) const {
+  double scale = 0.0;
+  for (int i = 0; i < m_; ++i) {
+    Eigen::Vector3d f, n;
+    linkLoads(i, s.axis.col(i), s.base.col(i), f, n);
+    scale += f.norm();
+  }
+  const Eigen::Vector3d t = tip(s);
+  scale += loadForceFree(t).norm() + couplingForce(t).norm();
+  return std::max(scale, 1e-9);
+}
+
+}  // namespace statics
+}  // namespace cable_dynamics

@@ -1,0 +1,146 @@
+#include "cable_dynamics/statics/static_solver.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "cable_dynamics/dynamics/joint_geometry.h"
+#include "static_equations.h"
+#include "static_newton.h"
+#include "static_start.h"
+
+namespace cable_dynamics {
+namespace {
+
+using statics::StaticEquations;
+using statics::StaticNewton;
+using statics::StaticState;
+
+/// Why the model or the problem has no solution here, or empty.
+std::string refusal(const ChainModel& model, const StaticProblem& problem, const StaticEquations* eq) {
+  std::ostringstream text;
+  if (problem.first_link < 0 || problem.first_link >= model.links()) {
+    text << "no deployed link: first_link " << problem.first_link << " of " << model.links() << " links";
+    return text.str();
+  }
+  const LinkProperties& p = model.properties();
+  if (model.stiffnessModel() == StiffnessModel::kPaper &&
+      (p.stiffness_elevation.any() || p.stiffness_azimuth.any() || p.stiffness_torsion.any())) {
+    return "the paper stiffness model's springs are not supported by the statics (use the bending model, or no springs)";
+  }
+  if (eq != nullptr && problem.tip_coupled) {
+    const double distance = (problem.target_position - problem.base_position).norm(), length = eq->deployedLength();
+    if (distance > length) {
+      text << "no equilibrium: the target is " << distance << " m from the base and the deployed cable is " << length
+           << " m long";
+      return text.str();
+    }
+  }
+  return "";
+}
+
+/// The guess without springs: the swept limp chain, shot onto the coupling spring when coupled.
+bool limpStart(const StaticEquations& eq, StaticState& s, std::string& why) {
+  if (eq.problem().tip_coupled) return statics::shootCoupled(eq, s, why);
+  statics::straightStart(eq, Eigen::Vector3d::UnitZ(), s);  // the fixed points' first guesses, the depths
+  statics::sweepLimp(eq, Eigen::Vector3d::Zero(), s);
+  return true;
+}
+
+/// Newton with the springs ramped up from a tenth of a percent, each step's solution the next one's
+/// start, a step that fails retried at the geometric mean.
+bool continuation(StaticEquations& eq, StaticNewton& newton, StaticState& s, const StaticOptions& options,
+                  int& iterations, double& residual, std::string& why) {
+  StaticState saved = s;
+  double done = 0.0, next = 1e-3;
+  for (int attempt = 0; attempt < 60; ++attempt) {
+    eq.setStiffnessScale(next);
+    int taken = 0;
+    const bool ok = newton.solve(s, options.tolerance, options.max_iterations, taken, residual, why);
+    iterations += taken;
+    if (ok) {
+      if (next == 1.0) return true;
+      saved = s;
+      done = next;
+      next = std::min(1.0, next * 4.0);
+    } else {
+      s = saved;
+      next = done > 0.0 ? std::sqrt(done * next) : next * 0.1;
+      if (next <= done * 1.0001) break;
+    }
+  }
+  eq.setStiffnessScale(1.0);
+  why = "the stiffness continuation stalled: " + why;
+  return false;
+}
+
+void writeSolution(const ChainModel& model, const StaticEquations& eq, const StaticState& s, StaticSolution& out) {
+  const int n = model.links(), first = eq.problem().first_link;
+  const LinkProperties& p = model.properties();
+  out.axes = Eigen::Matrix3Xd::Zero(3, n);
+  out.axes.row(2).setOnes();
+  out.twists = Eigen::VectorXd::Zero(n);
+  out.tension = Eigen::VectorXd::Zero(n);
+  out.joint_force = Eigen::Matrix3Xd::Zero(3, n);
+  // Zero twist at every joint: sigma_k = sigma_{k-1} + Omega(u_{k-1}, u_k), from the clamp's frame.
+  Eigen::Vector3d prev = p.clamp_axis;
+  double sigma = p.clamp_twist;
+  for (int i = 0; i < eq.links(); ++i) {
+    const int k = first + i;
+    const Eigen::Vector3d u = s.axis.col(i);
+    sigma += transportHolonomy(prev.x(), prev.y(), prev.z(), u.x(), u.y(), u.z());
+    out.axes.col(k) = u;
+    out.twists(k) = sigma;
+    out.joint_force.col(k) = s.force.col(i);
+    out.tension(k) = -s.force.col(i).dot(u);
+    prev = u;
+  }
+  out.tip_position = eq.tip(s);
+}
+
+}  // namespace
+
+StaticSolution solveStatics(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
+                            const StaticOptions& options) {
+  StaticSolution out;
+  out.message = refusal(model, problem, nullptr);
+  if (!out.message.empty()) return out;
+  StaticEquations eq(model, current, problem);
+  out.message = refusal(model, problem, &eq);
+  if (!out.message.empty()) return out;
+
+  StaticState s;
+  s.resize(eq.links());
+  StaticNewton newton(eq);
+  std::string why;
+  int taken = 0;
+  bool ok = false;
+  if (!eq.hasBendSprings()) {
+    // Limp: the sweep is the answer up to the drag's fixed points and a profile's depths; Newton polishes.
+    std::string start_why;
+    const bool started = limpStart(eq, s, start_why);
+    ok = newton.solve(s, options.tolerance, options.max_iterations, taken, out.residual, why);
+    out.iterations = taken;
+    if (!ok && !started) why += " (from a poor start: " + start_why + ")";
+  } else {
+    // Springs: a free tip starts straight along the clamp (the small-deflection answer's neighbour), a
+    // coupled one from the limp chain that meets the target; if Newton stalls there, ramp the springs up.
+    if (problem.tip_coupled) {
+      limpStart(eq, s, why);
+    } else {
+      statics::straightStart(eq, eq.clampAxis(), s);
+    }
+    ok = newton.solve(s, options.tolerance, options.max_iterations, taken, out.residual, why);
+    out.iterations += taken;
+    if (!ok) {
+      eq.setStiffnessScale(0.0);
+      limpStart(eq, s, why);
+      ok = continuation(eq, newton, s, options, out.iterations, out.residual, why);
+    }
+  }
+  out.converged = ok;
+  out.message = ok ? "" : why;
+  writeSolution(model, eq, s, out);
+  return out;
+}
+
+}  // namespace cable_dynamics
