@@ -97,3 +97,6 @@ target_compile_definitions(test_formulations PRIVATE CABLE_CONFIG_DIR="${CMAKE_C
 
 catkin_add_gtest(test_winch test/test_winch.cpp)
 target_link_libraries(test_winch cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+catkin_add_gtest(test_equilibrium_start test/test_equilibrium_start.cpp)
+target_link_libraries(test_equilibrium_start cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

@@ -26,9 +26,11 @@ constexpr double kMaxEnergyDrift = 1e-3;
 
 const char* const kUsage =
     "usage: cable_sim --config FILE [--set key.path=value ...] [--duration S] --output run.csv\n"
-    "                 [--plot run.png] [--sample S]\n"
+    "                 [--plot run.png] [--sample S] [--statics]\n"
     "Simulates the cable offline and writes one CSV row every --sample seconds (default 0.01 s).\n"
-    "--duration defaults to the config's simulation.duration.\n";
+    "--duration defaults to the config's simulation.duration.\n"
+    "--statics solves the static equilibrium for the configured loads and ends instead, writes it as the\n"
+    "CSV's one row (t = 0) and exits (status 6 when there is none, with the reason).\n";
 
 bool fileExists(const std::string& path) {
   struct stat info;
@@ -71,6 +73,34 @@ class ProgressBar {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
 };
 
+/// cable_sim --statics: the equilibrium as the CSV's one row, a summary on `err`. Exit status 0, 4 (cannot
+/// write), 6 (no equilibrium).
+int writeStatics(CableSimulator& sim, const CableParams& params, const std::string& output, std::ostream& err) {
+  const auto start = std::chrono::steady_clock::now();
+  const StaticSolution s = sim.resetToEquilibrium();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!s.converged) {
+    err << "cable_sim: no static equilibrium: " << s.message << "\n";
+    return 6;
+  }
+  std::ofstream csv(output);
+  if (!csv) {
+    err << "cable_sim: cannot write " << output << "\n";
+    return 4;
+  }
+  SimulationSnapshot snapshot;
+  sim.snapshot(snapshot);
+  writeCsvHeader(csv, params.links);
+  if (!writeCsvRow(csv, snapshot)) {
+    err << "cable_sim: the static equilibrium has a non-finite value\n";
+    return 3;
+  }
+  err << "cable_sim: static equilibrium in " << s.iterations << " Newton iterations, residual " << s.residual
+      << " (tolerance " << StaticOptions{}.tolerance << "), " << 1e3 * wall << " ms; top tension "
+      << snapshot.line_pull << " N; wrote " << output << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -78,7 +108,7 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   CableParams params;
   double sample = 0.01;
   try {
-    o = parseCli(argc, argv, {"--config", "--set", "--duration", "--output", "--plot", "--sample"});
+    o = parseCli(argc, argv, {"--config", "--set", "--duration", "--output", "--plot", "--sample", "--statics"});
     if (o.help) {
       out << kUsage;
       return 0;
@@ -95,14 +125,19 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
     return 2;
   }
 
+  if (o.statics) params.initial.mode = InitialMode::kAngles;  // solved below, with its report
   std::unique_ptr<CableSimulator> simulator;
   try {
     simulator = std::make_unique<CableSimulator>(params);
-    requireStableTimeStep(params, simulator->properties());  // a dt beyond RK4's reach: refused, not run
+    if (!o.statics) requireStableTimeStep(params, simulator->properties());  // beyond RK4's reach: refused
   } catch (const std::invalid_argument& e) {
     err << "cable_sim: " << e.what() << "\n";
     return 2;
+  } catch (const std::runtime_error& e) {  // initial.mode: equilibrium without an equilibrium
+    err << "cable_sim: " << e.what() << "\n";
+    return 6;
   }
+  if (o.statics) return writeStatics(*simulator, params, o.output, err);
   CableSimulator& sim = *simulator;
   const StableStep stable = estimateStableStep(params, sim.properties());
   err << "cable_sim: " << params.links << " links, " << integratorName(params.simulation.integrator) << ", dt = " << sim.dt()

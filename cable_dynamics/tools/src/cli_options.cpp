@@ -40,6 +40,10 @@ CliOptions parseCli(int argc, const char* const* argv, const std::vector<std::st
     if (std::find(allowed.begin(), allowed.end(), flag) == allowed.end()) {
       throw UsageError("unknown option '" + flag + "'");
     }
+    if (flag == "--statics") {  // the one flag without a value
+      o.statics = true;
+      continue;
+    }
     if (i + 1 >= argc) throw UsageError(flag + " needs a value");
     const std::string value = argv[++i];
     if (flag == "--config") {

@@ -223,6 +223,8 @@ CableParams parseConfig(const YAML::Node& root) {
   p.gravity = top.number("gravity", 9.81, 0.0, 100.0, false, "m/s^2");
 
   Section initial = top.sub("initial");
+  p.initial.mode = initial.choice("mode", "angles", {"angles", "equilibrium"}) == "angles" ? InitialMode::kAngles
+                                                                                       : InitialMode::kEquilibrium;
   p.initial.elevation = initial.perJoint("elevation", p.links, -M_PI, M_PI, "rad");
   p.initial.azimuth = initial.perJoint("azimuth", p.links, -M_PI, M_PI, "rad");
   p.initial.torsion = initial.perJoint("torsion", p.links, -1e3, 1e3, "rad");

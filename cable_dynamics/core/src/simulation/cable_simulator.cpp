@@ -66,6 +66,40 @@ void CableSimulator::reset() {
   regrid_energy_ = 0.0;
   dynamics_.current() = CurrentField(params_.fluid);
   setPaperState(q, qd);
+  if (params_.initial.mode == InitialMode::kEquilibrium) {
+    const StaticSolution s = resetToEquilibrium();
+    if (!s.converged) throw std::runtime_error("initial.mode = equilibrium: " + s.message);
+  }
+}
+
+StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) {
+  const EndInputs ends = ends_.at(time_);
+  StaticProblem problem;
+  problem.base_position = ends.base_position;
+  problem.tip_coupled = ends.load_coupled;
+  problem.target_position = ends.target_position;
+  problem.first_link = firstLink();
+  double magnitude = 0.0;
+  dynamics_.mechanicalEnergy(x_, ends, magnitude);  // sets the winch's link to its present length
+  StaticSolution s = solveStatics(dynamics_.model(), dynamics_.current(), problem, options);
+  if (!s.converged) return s;
+  const int n = links();
+  for (int k = 0; k < n; ++k) {
+    x_.segment<3>(StateLayout::axis(k)) = s.axes.col(k);
+    x_(StateLayout::twist(k)) = s.twists(k);
+    x_.segment<3>(StateLayout::omega(k)).setZero();
+  }
+  x_(StateLayout::dissipated(n)) = 0.0;
+  x_(StateLayout::workInput(n)) = 0.0;
+  // Azimuths continue from the solved axes (nearest branch to the old ones); a new start for the
+  // energy bookkeeping, as after setPaperState().
+  dynamics_.followAzimuths(x_);
+  start_balance_known_ = false;
+  drift_reference_known_ = false;
+  largest_scale_ = energy_drift_ = 0.0;
+  scheme_->forget();
+  if (hasWinch()) ends_.winch().restart(ends_.winch().motion().length);  // at rest, as the cable
+  return s;
 }
 
 void CableSimulator::recover() {

@@ -111,8 +111,17 @@ struct FluidParams {
   int drag_points = 3;  ///< Gauss-Legendre points per link for the distributed drag
 };
 
+/// Where a run starts from.
+enum class InitialMode {
+  kAngles,       ///< the configured paper angles, at rest
+  kEquilibrium,  ///< the static equilibrium for the configured loads and ends (statics/static_solver.h)
+};
+
 /// Initial state in the paper's coordinates, one value per joint [rad].
 struct InitialState {
+  /// kEquilibrium solves from the angles' shape: an anchored or attached load's target is relative to
+  /// the tip of that shape, as with kAngles.
+  InitialMode mode = InitialMode::kAngles;
   std::vector<double> elevation;
   std::vector<double> azimuth;
   std::vector<double> torsion;

@@ -14,6 +14,7 @@
 #include "cable_dynamics/simulation/stable_step.h"
 #include "cable_dynamics/simulation/step_check.h"
 #include "cable_dynamics/simulation/time_schemes/time_scheme.h"
+#include "cable_dynamics/statics/static_solver.h"
 
 namespace cable_dynamics {
 
@@ -53,11 +54,17 @@ class CableSimulator {
   static constexpr int kMaxSubsteps = 64;
 
   /// Throws std::invalid_argument when the paper stiffness model has azimuth or torsion springs or
-  /// dampers (singular at the vertical: use the bending model), naming the key.
+  /// dampers (singular at the vertical: use the bending model), naming the key, and when
+  /// `initial.mode: equilibrium` finds no equilibrium (the message says why).
   explicit CableSimulator(const CableParams& params);
 
-  /// Back to the configured initial state and inputs at t = 0.
+  /// Back to the configured initial state and inputs at t = 0. With `initial.mode: equilibrium`, throws
+  /// std::runtime_error when the statics find no equilibrium (the state is then the angles').
   void reset();
+  /// Puts the cable at rest in its static equilibrium for the present inputs (current, base position,
+  /// load target, deployed length), keeping the time, and restarts the energy bookkeeping. On failure
+  /// the state is unchanged and the solution's message says why.
+  StaticSolution resetToEquilibrium(const StaticOptions& options = {});
   /// After a divergence: the configured initial shape, at rest, under the base's present position; the
   /// time and the inputs (current, targets) carry on.
   void recover();

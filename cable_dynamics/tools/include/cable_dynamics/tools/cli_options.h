@@ -27,6 +27,7 @@ struct CliOptions {
   std::string output;                    ///< --output run.csv
   std::string plot;                      ///< --plot run.png
   bool help = false;                     ///< --help / -h
+  bool statics = false;                  ///< --statics (cable_sim: the static equilibrium only)
 };
 
 /// Parses argv. `allowed` lists the flags the tool accepts (e.g. {"--config", "--set", "--q"}).
