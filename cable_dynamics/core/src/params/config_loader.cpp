@@ -82,6 +82,7 @@ MotionParams parseMotion(Section motion) {
   m.offset = vector3(motion, "offset", 1e5, "m");
   m.amplitude = vector3(motion, "amplitude", 1e4, "m");
   m.period = motion.number("period", 10.0, 0.0, 1e6, true, "s");
+  m.phase = motion.number("phase", 0.0, -2.0 * M_PI, 2.0 * M_PI, false, "rad");
   m.velocity = vector3(motion, "velocity", 100.0, "m/s");
   motion.rejectUnknownKeys();
   return m;

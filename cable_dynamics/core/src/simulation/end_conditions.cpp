@@ -7,10 +7,10 @@
 namespace cable_dynamics {
 
 void motionAt(const MotionParams& m, double t, Eigen::Vector3d& p, Eigen::Vector3d& v, Eigen::Vector3d& a) {
-  const double w = 2.0 * M_PI / m.period;
-  p = worldToPaper(m.offset + m.amplitude * std::sin(w * t) + m.velocity * t);
-  v = worldToPaper(m.amplitude * (w * std::cos(w * t)) + m.velocity);
-  a = worldToPaper(m.amplitude * (-w * w * std::sin(w * t)));
+  const double w = 2.0 * M_PI / m.period, angle = w * t + m.phase;
+  p = worldToPaper(m.offset + m.amplitude * std::sin(angle) + m.velocity * t);
+  v = worldToPaper(m.amplitude * (w * std::cos(angle)) + m.velocity);
+  a = worldToPaper(m.amplitude * (-w * w * std::sin(angle)));
 }
 
 EndConditions::EndConditions(const BaseParams& base, const LoadParams& load, const WinchParams& winch)

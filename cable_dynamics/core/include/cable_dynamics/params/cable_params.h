@@ -66,11 +66,12 @@ struct DampingParams {
   double torsion = 0.0;
 };
 
-/// A prescribed motion: offset + amplitude sin(2 pi t / period) + velocity t, world frame (z up).
+/// A prescribed motion: offset + amplitude sin(2 pi t / period + phase) + velocity t, world frame (z up).
 struct MotionParams {
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();     ///< [m]
   Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  ///< [m]
   double period = 10.0;                                 ///< [s]
+  double phase = 0.0;                                   ///< [rad]; pi/2 starts at rest
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();   ///< [m/s]
 };
 
