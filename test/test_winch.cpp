@@ -1,4 +1,4 @@
-// The winch at the base (docs/MODEL.md section 9): its speed and length law, and the cable it pays out
+// The winch at the base (docs/MODEL.md section 8): its speed and length law, and the cable it pays out
 // and hauls in, against force balances and bookkeeping nobody here wrote: the line pull of a load lowered
 // at constant speed (submerged weight of the deployed cable and the load, less the drag at that speed),
 // the deployed length against the integral of the commanded speed, the mass against the length, and

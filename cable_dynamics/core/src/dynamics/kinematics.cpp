@@ -38,7 +38,7 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
   }
   // Base ends: running sums along the chain, from the base link (the drum's slots before it sit at
   // the base). A winch pays the base link's material out along its axis u at the speed v: each of its
-  // points moves by v u more and accelerates by v' u + 2 v u' more (docs/MODEL.md section 9), and the
+  // points moves by v u more and accelerates by v' u + 2 v u' more (docs/MODEL.md section 8), and the
   // links beyond it with them.
   Vec3 pos = toVec3(ends.base_position), vel = toVec3(ends.base_velocity), acc = toVec3(ends.base_acceleration);
   for (int k = model.firstBlock() * kBlockLanes; k < first; ++k) {  // the idle lanes the block loops read

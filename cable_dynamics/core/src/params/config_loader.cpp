@@ -174,7 +174,7 @@ void parseWinch(Section winch, CableParams& p) {
   }
   winch.rejectUnknownKeys();
   // The winch's link moves with the paid-out cable and has a length of its own: the recursion's
-  // formulation, and springs of the bending model (docs/MODEL.md section 9).
+  // formulation, and springs of the bending model (docs/MODEL.md section 8).
   if (p.simulation.formulation != Formulation::kRecursive) {
     throw ConfigError("simulation.formulation", "paper", "recursive with a winch");
   }

@@ -36,7 +36,7 @@ class ChainModel {
   /// and mass; the winch's link: its present length).
   const LinkProperties& properties() const { return properties_; }
 
-  // The winch (docs/MODEL.md section 9): slots [0, firstLink()) are on the drum, massless and of zero
+  // The winch (docs/MODEL.md section 8): slots [0, firstLink()) are on the drum, massless and of zero
   // length; slot firstLink() is the winch's link, whose length changes with the deployed length.
   // Without a winch, firstLink() is 0 and link 0 keeps its configured length.
 

@@ -145,7 +145,7 @@ struct WinchCommand {
   double value = 0.0;
 };
 
-/// A winch at the base that pays the cable out and hauls it in (docs/MODEL.md section 9). The cable
+/// A winch at the base that pays the cable out and hauls it in (docs/MODEL.md section 8). The cable
 /// starts deployed as configured (cable.length); links are added and removed at the base as the
 /// deployed length passes whole links of the base link's configured length.
 struct WinchParams {

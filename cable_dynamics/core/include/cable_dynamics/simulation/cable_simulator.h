@@ -87,7 +87,7 @@ class CableSimulator {
   /// The paper coordinates (3n) [rad] and their rates (3n) [rad/s] of the present state.
   void paperCoordinates(Eigen::VectorXd& q, Eigen::VectorXd& qd) const { dynamics_.paperCoordinates(x_, q, qd); }
 
-  /// The winch (docs/MODEL.md section 9): commands take effect from the next step, within the limits.
+  /// The winch (docs/MODEL.md section 8): commands take effect from the next step, within the limits.
   bool hasWinch() const { return ends_.hasWinch(); }
   const Winch& winch() const { return ends_.winch(); }
   /// Pay out (> 0) or haul in (< 0) [m/s]; replaces a target length and the schedule's last command.

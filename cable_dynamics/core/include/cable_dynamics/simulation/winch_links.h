@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// \brief Adds and removes links at the winch as the deployed length passes whole links: the winch's
-///        link (the base link) stays between 1 and 2.25 configured link lengths (docs/MODEL.md section 9).
+///        link (the base link) stays between 1 and 2.25 configured link lengths (docs/MODEL.md section 8).
 
 #include <Eigen/Core>
 
