@@ -53,6 +53,29 @@ TEST(NoAllocation, SemiImplicitStep) {
   expectNoAllocation({"simulation.integrator=semi_implicit", "simulation.dt=0.01"});
 }
 
+TEST(NoAllocation, WinchPayingOutAndHaulingIn) {
+  // Links added and removed at the winch, in the steps where that happens: everything is sized for
+  // the longest deployment at start.
+  CableParams p = loadConfigString(R"(
+cable: {links: 8, length: 16.0, diameter: 0.03, mass_per_length: 1.0, stiffness: {model: bending, bending_rigidity: 5.0}}
+load: {mass: 5.0, volume: 0.002, drag_area: 0.1}
+fluid: {density: 1025.0, current: [1.0, 0.2, 0.0]}
+initial: {elevation: 0.3}
+winch: {max_length: 40.0, max_speed: 2.0, max_acceleration: 100.0, speed: 2.0}
+)");
+  CableSimulator sim(p);
+  ASSERT_TRUE(sim.step().ok);
+  Eigen::internal::set_is_malloc_allowed(false);
+  bool ok = true;
+  for (int i = 0; i < 3000; ++i) ok = sim.step().ok && ok;
+  sim.commandWinchSpeed(-2.0);
+  for (int i = 0; i < 3000; ++i) ok = sim.step().ok && ok;
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_TRUE(ok);
+  EXPECT_GE(sim.linksAdded(), 2);
+  EXPECT_GE(sim.linksRemoved(), 2);
+}
+
 TEST(NoAllocation, GuardIsActive) {
   // The guard itself works: an allocation under it aborts (checked in a death test).
   EXPECT_DEATH(
