@@ -188,7 +188,8 @@ TEST(ConfigLoader, MotionsAndCurrentProfile) {
 TEST(ConfigLoader, RejectsBadMotionsAndProfiles) {
   expectRejected("base.motion.period=0", "base.motion.period");
   expectRejected("base.motion.amplitude=[1, 2]", "base.motion.amplitude");
-  expectRejected("base.motion.phase=1", "base.motion.phase");
+  expectRejected("base.motion.phase=7", "base.motion.phase");  // beyond 2 pi
+  expectRejected("base.motion.speed=1", "base.motion.speed");  // no such key
   expectRejected("load.coupling.stiffness=0", "load.coupling.stiffness");
   expectRejected("load.coupling.damping=-1", "load.coupling.damping");
   expectRejected("fluid.current_profile=[[10, 1, 0, 0], [5, 1, 0, 0]]", "fluid.current_profile[1]");

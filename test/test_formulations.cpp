@@ -1,4 +1,5 @@
-// The two formulations (recursive O(n) and dense O(n^3)) give the same trajectories for every preset.
+// The two formulations (recursive O(n) and dense O(n^3)) give the same trajectories for every preset
+// (but those with a winch, which only the recursion has: docs/MODEL.md section 8).
 #include <filesystem>
 #include <iostream>
 
@@ -13,6 +14,7 @@ TEST(Formulations, SameTrajectoriesForEveryPreset) {
   int presets = 0;
   for (const auto& entry : std::filesystem::directory_iterator(CABLE_CONFIG_DIR)) {
     if (entry.path().extension() != ".yaml") continue;
+    if (loadConfigFile(entry.path().string()).winch.enabled) continue;
     ++presets;
     CableParams dense_params = loadConfigFile(entry.path().string(), {"simulation.formulation=paper"});
     CableParams recursive_params = loadConfigFile(entry.path().string(), {"simulation.formulation=recursive"});

@@ -4,6 +4,12 @@
 #include <cmath>
 
 namespace cable_dynamics {
+namespace {
+
+/// A target length this close is reached [m].
+constexpr double kArrived = 1e-6;
+
+}  // namespace
 
 Winch::Winch(const WinchParams& params) : params_(params) { reset(params.min_length); }
 
@@ -51,7 +57,11 @@ double Winch::desiredSpeed(double h) const {
   double desired = speed_command_;
   if (to_length_) {
     const double error = length_command_ - length;
-    desired = std::copysign(std::min(params_.max_speed, stopping(std::abs(error), std::copysign(speed, error))), error);
+    // Within kArrived of the target: stop there (the law below would land on it with some speed left,
+    // and then chatter around it).
+    desired = std::abs(error) < kArrived
+                  ? 0.0
+                  : std::copysign(std::min(params_.max_speed, stopping(std::abs(error), std::copysign(speed, error))), error);
   }
   return std::clamp(desired, -stopping(length - params_.min_length, -speed),
                     stopping(params_.max_length - length, speed));
