@@ -12,6 +12,7 @@
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/input_guard.h"
 #include "cable_dynamics/ros/message_builders.h"
+#include "cable_dynamics/ros/reset_request.h"
 #include "cable_dynamics/ros/winch_request.h"
 
 // Counts heap allocations while `g_counting` is set (this test binary only).
@@ -95,6 +96,24 @@ TEST(WinchRequest, LengthsOutsideTheRangeAreRefusedNamingIt) {
   EXPECT_FALSE(checkWinchLength(1.0, fixed.winch, why));
   EXPECT_EQ(why, kNoWinchMessage);
   EXPECT_NE(why.find("no winch"), std::string::npos);
+}
+
+TEST(WinchReset, TheDrumsSlotsMustBeZero) {
+  const CableParams p = winchParams();
+  const int drum = p.winch.stored_links;
+  std::vector<double> q(3 * p.links, 0.0), qd;
+  for (int k = drum; k < p.links; ++k) q[3 * k] = 0.3;  // the deployed links tilted
+  std::string why;
+  EXPECT_TRUE(checkResetRequest(q, qd, p.links, prefixed(), why, drum));
+  q[3 * (drum - 1) + 1] = 0.1;  // the last drum slot's azimuth would turn the deployed cable
+  EXPECT_FALSE(checkResetRequest(q, qd, p.links, prefixed(), why, drum));
+  EXPECT_NE(why.find("positions[31] (winch_test/joint_11_azimuth) = 0.1: expected 0"), std::string::npos) << why;
+  EXPECT_TRUE(checkResetRequest(q, qd, p.links, prefixed(), why, 0)) << "without a winch every slot is free";
+  q[3 * (drum - 1) + 1] = 0.0;
+  qd.assign(3 * p.links, 0.0);
+  qd[0] = 1.0;
+  EXPECT_FALSE(checkResetRequest(q, qd, p.links, prefixed(), why, drum));
+  EXPECT_NE(why.find("velocities[0]"), std::string::npos) << why;
 }
 
 TEST(WinchOutputs, PreparedForTheConfiguredDeploymentWithNamesPerSlot) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <cable_msgs/GetModel.h>
+#include <cable_msgs/Reset.h>
 #include <cable_msgs/SetWinchLength.h>
 #include <gtest/gtest.h>
 #include <std_msgs/Float64.h>
@@ -332,6 +333,30 @@ TEST_F(WinchNodeTest, GetModelStaysFiniteWithTheDrumsSlots) {
   ASSERT_EQ(model.response.q.size(), 3u * kSlots);
   for (double x : model.response.M) ASSERT_TRUE(std::isfinite(x));
   for (double x : model.response.G) ASSERT_TRUE(std::isfinite(x));
+}
+
+// reset with a shape: the winch goes back to its configured deployment, the deployed links take the shape;
+// a drum slot given a value is refused, naming it.
+TEST_F(WinchNodeTest, ResetWithAShapeRestoresTheConfiguredDeployment) {
+  cable_msgs::Reset bad;
+  bad.request.positions.assign(3 * kSlots, 0.0);
+  bad.request.positions[3] = 0.2;  // slot 2 (joint_2_elevation), on the drum
+  ASSERT_TRUE(ros::service::call(kNs + "/reset", bad));
+  EXPECT_FALSE(bad.response.success);
+  EXPECT_NE(bad.response.message.find("joint_2_elevation"), std::string::npos) << bad.response.message;
+  EXPECT_NE(bad.response.message.find("drum"), std::string::npos) << bad.response.message;
+  cable_msgs::Reset reset;
+  reset.request.positions.assign(3 * kSlots, 0.0);
+  for (int k = kFirstAtStart; k < kSlots; ++k) reset.request.positions[3 * k] = 0.1;
+  ASSERT_TRUE(ros::service::call(kNs + "/reset", reset));
+  EXPECT_TRUE(reset.response.success) << reset.response.message;
+  ASSERT_TRUE(waitFor([] { return state().sim_time < 0.5 && state().first_link == unsigned(kFirstAtStart); }, 5.0));
+  EXPECT_NEAR(state().deployed_length, kLength, 1e-9);
+  EXPECT_EQ(state().links_added, 0u);
+  ASSERT_TRUE(waitFor([] { return recorder->joints.name.size() == 3u * (kSlots - kFirstAtStart); }, 5.0));
+  EXPECT_EQ(recorder->joints.name.front(), jointName(kFirstAtStart + 1, "elevation"));
+  EXPECT_NEAR(recorder->joints.position.front(), 0.1, 0.05) << "the deployed links did not take the shape";
+  EXPECT_TRUE(recorder->non_finite.empty()) << recorder->non_finite;
 }
 
 // Without a winch the topic's messages are rejected and counted, the service says there is none, and

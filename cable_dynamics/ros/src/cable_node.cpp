@@ -266,7 +266,8 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
 }
 
 bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Response& res) {
-  if (!checkResetRequest(req.positions, req.velocities, params_.links, names_, res.message)) {
+  if (!checkResetRequest(req.positions, req.velocities, params_.links, names_, res.message,
+                         params_.winch.enabled ? params_.winch.stored_links : 0)) {
     res.success = false;
     return true;
   }
@@ -274,6 +275,8 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
     if (req.positions.empty()) {
       sim_->reset();
     } else {
+      // With a winch the shape applies to the configured deployment: the winch goes back to its start.
+      if (sim_->hasWinch()) sim_->reset();
       const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(req.positions.data(), req.positions.size());
       Eigen::VectorXd qd = Eigen::VectorXd::Zero(q.size());
       if (!req.velocities.empty()) qd = Eigen::Map<const Eigen::VectorXd>(req.velocities.data(), req.velocities.size());
