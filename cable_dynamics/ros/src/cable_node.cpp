@@ -71,9 +71,9 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                     << "(std_msgs/Float64, m/s, + pays out) and the winch/set_length service");
   }
 
-  // The URDF describes every slot at its configured length (with a winch: the longest deployment), so
-  // that it stays one fixed model while links come off and go back onto the drum; the drum's slots of
-  // the present deployment (zero length and mass in the simulator) are not in it as such.
+  // The URDF describes every slot at its configured length (with a winch: the longest deployment), one
+  // fixed model while links come off and go back onto the drum: a slot on the drum (zero length and mass
+  // in the simulator) is in it at the length and mass it has once paid out.
   nh_.setParam("robot_description", cableUrdf(deriveLinkProperties(params_), names_));
   prepareOutputs(params_, names_, options_.world_frame, outputs_);
   source_.spring_force = Eigen::VectorXd::Zero(3 * params_.links);
