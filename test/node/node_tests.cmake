@@ -34,3 +34,13 @@ add_rostest_gtest(test_fuzz_inputs test/fuzz_inputs.test test/node/test_fuzz_inp
 target_include_directories(test_fuzz_inputs PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
 target_link_libraries(test_fuzz_inputs ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 add_dependencies(test_fuzz_inputs cable_msgs_generate_messages_cpp cable_dynamics_node)
+
+# The winch (pay out on winch/speed, haul in with winch/set_length, outputs for the deployed links only,
+# the guards), and a node without a winch refusing both.
+add_rostest_gtest(test_winch_node test/winch.test test/node/test_winch_node.cpp)
+target_include_directories(test_winch_node PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
+target_link_libraries(test_winch_node ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+add_dependencies(test_winch_node cable_msgs_generate_messages_cpp cable_dynamics_node)
+# The winch's node parts (guard, range check, shaping without allocation, the new fields), no roscore.
+catkin_add_gtest(test_node_winch_parts test/node/test_node_winch_parts.cpp)
+target_link_libraries(test_node_winch_parts cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})

@@ -123,7 +123,8 @@ class OutputRecorder {
     for (const auto& s : m.status) {
       if (s.name != diagnostics_name_) continue;
       for (const auto& kv : s.values) {
-        // Every value is a number: it must parse whole and be finite ("nan", "inf" fail).
+        if (kv.key == "winch command") continue;  // the one phrase ("pay out at 0.5 m/s", "to length 25 m")
+        // Every other value is a number: it must parse whole and be finite ("nan", "inf" fail).
         char* end = nullptr;
         const double v = std::strtod(kv.value.c_str(), &end);
         if (end == kv.value.c_str() || *end != '\0') {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <tf2_eigen/tf2_eigen.h>
@@ -11,6 +12,7 @@
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/input_log.h"
 #include "cable_dynamics/ros/reset_request.h"
+#include "cable_dynamics/ros/winch_request.h"
 
 namespace cable_dynamics {
 namespace {
@@ -35,6 +37,7 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   sim_ = std::make_unique<CableSimulator>(params_);  // throws std::invalid_argument on a refused combination
   requireStableTimeStep(params_, sim_->properties());  // a dt beyond RK4's reach: refused at start, naming it
   joints_ = std::make_unique<ElasticJoints>(sim_->properties());
+  joints_first_ = sim_->firstLink();
   names_.prefix = options_.frame_prefix;
   clock_ = SimClock(options_.max_lag);
 
@@ -43,6 +46,8 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   guard.input_timeout = options_.input_timeout;
   guard.base_rest = options_.base_position;
   guard.plausible_radius = 2.0 * params_.totalLength() + 10.0;  // an ROV beyond it cannot be on this cable
+  guard.winch = params_.winch.enabled;
+  guard.winch_max_speed = params_.winch.max_speed;
   guard_ = std::make_unique<InputGuard>(guard);
   resolver_ = [this](const std::string& frame, Eigen::Isometry3d& t) { return resolveFrame(frame, t); };
 
@@ -57,8 +62,19 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                                      << " steps per cycle, max lag " << options_.max_lag
                                      << " s; estimated largest stable RK4 step " << sim_->estimateStableTimeStep()
                                      << " s");
+  if (params_.winch.enabled) {
+    const WinchParams& w = params_.winch;
+    ROS_INFO_STREAM("cable_dynamics: winch at the base: " << sim_->deployedLength() << " m deployed in "
+                    << params_.links - sim_->firstLink() << " links, length " << w.min_length << " to "
+                    << w.max_length << " m (" << params_.links << " slots of " << w.link_length << " m), at most "
+                    << w.max_speed << " m/s and " << w.max_acceleration << " m/s^2; commands on winch/speed "
+                    << "(std_msgs/Float64, m/s, + pays out) and the winch/set_length service");
+  }
 
-  nh_.setParam("robot_description", cableUrdf(sim_->properties(), names_));
+  // The URDF describes every slot at its configured length (with a winch: the longest deployment), one
+  // fixed model while links come off and go back onto the drum: a slot on the drum (zero length and mass
+  // in the simulator) is in it at the length and mass it has once paid out.
+  nh_.setParam("robot_description", cableUrdf(deriveLinkProperties(params_), names_));
   prepareOutputs(params_, names_, options_.world_frame, outputs_);
   source_.spring_force = Eigen::VectorXd::Zero(3 * params_.links);
   source_.alpha_hint = Eigen::VectorXd::Zero(params_.links);
@@ -71,6 +87,9 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   rov_sub_ = nh_.subscribe("rov_pose", kInputQueueSize, &CableNode::onRovPose, this);
   base_sub_ = nh_.subscribe("base_pose", kInputQueueSize, &CableNode::onBasePose, this);
   current_sub_ = nh_.subscribe("current", kInputQueueSize, &CableNode::onCurrent, this);
+  // Also without a winch: its commands are then refused (counted, logged, the service says why).
+  winch_sub_ = nh_.subscribe("winch/speed", kInputQueueSize, &CableNode::onWinchSpeed, this);
+  winch_srv_ = nh_.advertiseService("winch/set_length", &CableNode::onSetWinchLength, this);
   reset_srv_ = nh_.advertiseService("reset", &CableNode::onReset, this);
   model_srv_ = nh_.advertiseService("get_model", &CableNode::onGetModel, this);
   pause_srv_ = nh_.advertiseService("set_paused", &CableNode::onSetPaused, this);
@@ -113,6 +132,30 @@ void CableNode::onCurrent(const geometry_msgs::TwistStamped::ConstPtr& msg) {
   const InputVerdict verdict = guard_->current(*msg, ros::Time::now(), resolver_, current);
   logInput("current", verdict, guard_->counters(), options_);
   if (isAccepted(verdict)) sim_->setCurrent(current);
+}
+
+void CableNode::onWinchSpeed(const std_msgs::Float64::ConstPtr& msg) {
+  double speed = 0.0;
+  const InputVerdict verdict = guard_->winchSpeed(*msg, speed);
+  logWinchSpeed(verdict, guard_->counters(), params_.winch.max_speed);
+  if (isAccepted(verdict)) sim_->commandWinchSpeed(speed);
+}
+
+bool CableNode::onSetWinchLength(cable_msgs::SetWinchLength::Request& req,
+                                 cable_msgs::SetWinchLength::Response& res) {
+  res.deployed_length = sim_->deployedLength();
+  if (!checkWinchLength(req.length, params_.winch, res.message)) {
+    res.success = false;
+    ROS_WARN_STREAM_THROTTLE(kLogPeriod, "cable_dynamics: winch/set_length: " << res.message);
+    return true;
+  }
+  sim_->commandWinchLength(req.length);
+  res.success = true;
+  std::ostringstream s;
+  s << "winch driving from " << res.deployed_length << " m to " << req.length << " m (at most "
+    << params_.winch.max_speed << " m/s)";
+  res.message = s.str();
+  return true;
 }
 
 void CableNode::recoverFromDivergence(const std::string& why) {
@@ -181,6 +224,12 @@ void CableNode::onTimer(const ros::TimerEvent&) {
 }
 
 void CableNode::publishOutputs(const ros::Time& stamp) {
+  if (sim_->firstLink() != joints_first_) {
+    // A link was added or removed at the winch: the base's joint springs moved to the new base link.
+    // Rebuilt only then (two vectors of 3n), not every cycle.
+    joints_ = std::make_unique<ElasticJoints>(sim_->properties());
+    joints_first_ = sim_->firstLink();
+  }
   if (!readOutputs(*sim_, *joints_, source_)) {
     recoverFromDivergence("non-finite state at t = " + std::to_string(sim_->time()) + " s (nothing published)");
     return;
@@ -196,6 +245,8 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   max_tension_seen_ = std::max(max_tension_seen_, source_.snapshot.chain.tension.maxCoeff());
   const double scale = options_.tension_scale > 0.0 ? options_.tension_scale : max_tension_seen_;
 
+  status_.winch = winchStatus(source_);
+  shapeOutputs(source_.snapshot.first_link, outputs_);  // the deployed links only; no allocation
   fillJointState(source_, stamp, outputs_.joints);
   fillTransforms(source_, options_.base_position, stamp, outputs_.transforms);
   fillMarkers(source_, params_.totalLength(), scale, stamp, outputs_.markers);
@@ -215,7 +266,8 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
 }
 
 bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Response& res) {
-  if (!checkResetRequest(req.positions, req.velocities, params_.links, names_, res.message)) {
+  if (!checkResetRequest(req.positions, req.velocities, params_.links, names_, res.message,
+                         params_.winch.enabled ? params_.winch.stored_links : 0)) {
     res.success = false;
     return true;
   }
@@ -223,6 +275,8 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
     if (req.positions.empty()) {
       sim_->reset();
     } else {
+      // With a winch the shape applies to the configured deployment: the winch goes back to its start.
+      if (sim_->hasWinch()) sim_->reset();
       const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(req.positions.data(), req.positions.size());
       Eigen::VectorXd qd = Eigen::VectorXd::Zero(q.size());
       if (!req.velocities.empty()) qd = Eigen::Map<const Eigen::VectorXd>(req.velocities.data(), req.velocities.size());

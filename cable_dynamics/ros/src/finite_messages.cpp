@@ -51,7 +51,8 @@ bool allFinite(const cable_msgs::CableState& msg) {
   return finite(msg.tension) && std::isfinite(msg.top_tension) && finite(msg.load_force) && finite(msg.base_force) &&
          std::isfinite(msg.kinetic_energy) && std::isfinite(msg.potential_energy) &&
          std::isfinite(msg.elastic_energy) && std::isfinite(msg.dissipated_energy) && std::isfinite(msg.sim_time) &&
-         std::isfinite(msg.step_time) && std::isfinite(msg.real_time_factor) && std::isfinite(msg.lag);
+         std::isfinite(msg.step_time) && std::isfinite(msg.real_time_factor) && std::isfinite(msg.lag) &&
+         std::isfinite(msg.deployed_length) && std::isfinite(msg.line_pull) && std::isfinite(msg.winch_speed);
 }
 
 bool allFinite(const geometry_msgs::WrenchStamped& msg) {
@@ -61,7 +62,9 @@ bool allFinite(const geometry_msgs::WrenchStamped& msg) {
 bool allFinite(const NodeStatus& s) {
   return std::isfinite(s.sim_time) && std::isfinite(s.step_time) && std::isfinite(s.lag) &&
          std::isfinite(s.dropped_time) && std::isfinite(s.real_time_factor) && std::isfinite(s.loop_rate) &&
-         std::isfinite(s.retried_share);
+         std::isfinite(s.retried_share) && std::isfinite(s.winch.deployed_length) && std::isfinite(s.winch.speed) &&
+         std::isfinite(s.winch.line_pull) && std::isfinite(s.winch.commanded_speed) &&
+         std::isfinite(s.winch.target_length);
 }
 
 bool allFinite(const CableOutputs& o) {

@@ -115,4 +115,22 @@ InputVerdict InputGuard::current(const geometry_msgs::TwistStamped& msg, const r
   return settle(kCurrent, InputVerdict::kAccepted, stamp, now);
 }
 
+InputVerdict InputGuard::winchSpeed(const std_msgs::Float64& msg, double& speed) {
+  ++counters_.received;
+  InputVerdict verdict = InputVerdict::kAccepted;
+  if (!settings_.winch) {
+    verdict = InputVerdict::kNoWinch;
+  } else if (!std::isfinite(msg.data)) {
+    verdict = InputVerdict::kNonFinite;
+  } else if (std::abs(msg.data) > settings_.winch_max_speed) {
+    verdict = InputVerdict::kOutOfRange;
+  }
+  if (isAccepted(verdict)) {
+    speed = msg.data;
+  } else {
+    ++counters_.rejected;
+  }
+  return verdict;
+}
+
 }  // namespace cable_dynamics

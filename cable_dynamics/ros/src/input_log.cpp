@@ -41,11 +41,36 @@ void logInput(const char* topic, InputVerdict verdict, const InputCounters& c, c
       ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s (%g m/s): ignored (%u rejected so far)", topic,
                         describe(verdict), kMaxInputSpeed, c.rejected);
       break;
+    case InputVerdict::kNoWinch:
+      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s: ignored (%u rejected so far)", topic, describe(verdict),
+                        c.rejected);
+      break;
     case InputVerdict::kAccepted:
       break;
     case InputVerdict::kReacquired:
       ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s: %d consistent poses away from the tracked one: following "
                         "the new stream", topic, kReacquireAfter);
+      break;
+  }
+}
+
+void logWinchSpeed(InputVerdict verdict, const InputCounters& c, double max_speed) {
+  // Call sites of their own: a flood of winch commands does not silence the pose and current lines.
+  switch (verdict) {
+    case InputVerdict::kNoWinch:
+      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: winch/speed %s: ignored (%u rejected so far)", describe(verdict),
+                        c.rejected);
+      break;
+    case InputVerdict::kNonFinite:
+      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: winch/speed %s: ignored, the winch keeps its last command (%u "
+                        "rejected so far)", describe(verdict), c.rejected);
+      break;
+    case InputVerdict::kOutOfRange:
+      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: winch/speed is beyond winch.max_speed (|speed| <= %g m/s): "
+                        "ignored, not clamped; the winch keeps its last command (%u rejected so far)", max_speed,
+                        c.rejected);
+      break;
+    default:
       break;
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 #include "cable_dynamics/dynamics/frames.h"
 
@@ -59,6 +60,26 @@ const char* const kDiagnosticKeys[] = {"loop rate [Hz]",    "real-time factor", 
                                        "dropped time [s]",  "step time [s]",     "received inputs",    "rejected inputs",
                                        "stale inputs",      "diverged steps",    "retried steps",      "retried share"};
 constexpr int kDiagnosticCount = sizeof(kDiagnosticKeys) / sizeof(kDiagnosticKeys[0]);
+/// With a winch, these follow (all numbers but the command, a phrase).
+const char* const kWinchKeys[] = {"deployed length [m]", "deployed links", "winch speed [m/s]", "line pull [N]",
+                                  "winch command",       "links added",    "links removed"};
+constexpr int kWinchCount = sizeof(kWinchKeys) / sizeof(kWinchKeys[0]);
+constexpr int kWinchCommandKey = 4;
+
+/// Moves the `count` entries of `from` starting at `at` to the end of `to` and erases them from `from`;
+/// within the capacity of `to`, no allocation (moved strings keep their buffers).
+template <class T>
+void moveOut(std::vector<T>& from, std::size_t at, std::size_t count, std::vector<T>& to) {
+  to.insert(to.end(), std::make_move_iterator(from.begin() + at), std::make_move_iterator(from.begin() + at + count));
+  from.erase(from.begin() + at, from.begin() + at + count);
+}
+
+/// Moves the last `count` entries of `from` into `to` at `at`, in their order, and drops them from `from`.
+template <class T>
+void moveIn(std::vector<T>& from, std::size_t count, std::vector<T>& to, std::size_t at) {
+  to.insert(to.begin() + at, std::make_move_iterator(from.end() - count), std::make_move_iterator(from.end()));
+  from.resize(from.size() - count);
+}
 
 void format(std::string& out, const char* pattern, double value) {
   char text[64];
@@ -130,6 +151,7 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   text.text.reserve(160);
 
   out.state.tension.assign(n, 0.0);
+  out.state.deployed_links = static_cast<uint32_t>(n);
   out.state.header.frame_id = world_frame;
   out.wrench.header.frame_id = names.load();  // at the ROV, axes parallel to the world frame's
 
@@ -137,32 +159,86 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   diagnostic_msgs::DiagnosticStatus& status = out.diagnostics.status[0];
   status.name = "cable_dynamics: " + (names.prefix.empty() ? std::string("cable") : names.prefix);
   status.hardware_id = names.paper();
-  status.values.resize(kDiagnosticCount);
+  const bool winch = params.winch.enabled;
+  status.values.resize(kDiagnosticCount + (winch ? kWinchCount : 0));
   for (int i = 0; i < kDiagnosticCount; ++i) {
     status.values[i].key = kDiagnosticKeys[i];
     status.values[i].value.reserve(32);
   }
+  for (int i = 0; winch && i < kWinchCount; ++i) {
+    status.values[kDiagnosticCount + i].key = kWinchKeys[i];
+    status.values[kDiagnosticCount + i].value.reserve(64);
+  }
+
+  // Everything is sized for every slot; the drum's entries are moved aside.
+  out.slots = n;
+  out.first_link = 0;
+  out.stowed_joint_names.clear();
+  out.stowed_joint_names.reserve(dof);
+  out.stowed_transforms.clear();
+  out.stowed_transforms.reserve(dof);
+  shapeOutputs(params.winch.enabled ? params.winch.stored_links : 0, out);
+}
+
+void shapeOutputs(int first_link, CableOutputs& out) {
+  const int n = out.slots;
+  first_link = std::clamp(first_link, 0, n - 1);
+  if (first_link == out.first_link) return;
+  while (out.first_link < first_link) {  // hauled in: slot first_link goes onto the drum
+    moveOut(out.joints.name, 0, 3, out.stowed_joint_names);
+    moveOut(out.transforms, 1, 3, out.stowed_transforms);
+    ++out.first_link;
+  }
+  while (out.first_link > first_link) {  // paid out: slot first_link - 1 comes off the drum
+    moveIn(out.stowed_joint_names, 3, out.joints.name, 0);
+    moveIn(out.stowed_transforms, 3, out.transforms, 1);
+    --out.first_link;
+  }
+  const std::size_t deployed = static_cast<std::size_t>(n - first_link);
+  out.joints.position.resize(3 * deployed);  // within the capacity of 3n: no allocation
+  out.joints.velocity.resize(3 * deployed);
+  out.joints.effort.resize(3 * deployed);
+  visualization_msgs::Marker& line = out.markers.markers[kCableLine];
+  line.points.resize(deployed + 1);
+  line.colors.resize(deployed + 1);
+}
+
+WinchStatus winchStatus(const OutputSource& source) {
+  WinchStatus w;
+  const SimulationSnapshot& s = source.snapshot;
+  w.present = source.winch.present;
+  w.deployed_length = s.deployed_length;
+  w.speed = s.winch_speed;
+  w.line_pull = s.line_pull;
+  w.deployed_links = static_cast<unsigned>(s.chain.tension.size() - s.first_link);
+  w.targeting = source.winch.targeting;
+  w.commanded_speed = source.winch.commanded_speed;
+  w.target_length = source.winch.target_length;
+  w.links_added = static_cast<unsigned>(source.winch.links_added);
+  w.links_removed = static_cast<unsigned>(source.winch.links_removed);
+  return w;
 }
 
 void fillJointState(const OutputSource& source, const ros::Time& stamp, sensor_msgs::JointState& msg) {
   const SimulationSnapshot& s = source.snapshot;
-  for (int i = 0; i < s.q.size(); ++i) {
-    msg.position[i] = s.q(i);
-    msg.velocity[i] = s.qd(i);
-    msg.effort[i] = -source.spring_force(i);
+  const int from = 3 * s.first_link;  // the deployed links' coordinates
+  for (int i = from; i < s.q.size(); ++i) {
+    msg.position[i - from] = s.q(i);
+    msg.velocity[i - from] = s.qd(i);
+    msg.effort[i - from] = -source.spring_force(i);
   }
   msg.header.stamp = stamp;
 }
 
 void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
                     std::vector<geometry_msgs::TransformStamped>& transforms) {
-  const int n = static_cast<int>(source.links.size());
+  const int n = static_cast<int>(source.links.size()), first = source.snapshot.first_link;
   setPose(transforms[0].transform, base_position, kPaperInWorld);
-  for (int k = 0; k < n; ++k) {
-    setPose(transforms[1 + 3 * k].transform, source.links[k].position, source.links[k].orientation);
-    setPose(transforms[2 + 3 * k].transform, source.after_azimuth[k].position, source.after_azimuth[k].orientation);
-    setPose(transforms[3 + 3 * k].transform, source.after_elevation[k].position,
-            source.after_elevation[k].orientation);
+  for (int k = first; k < n; ++k) {  // a link on the drum has no frame
+    const int i = 3 * (k - first);
+    setPose(transforms[1 + i].transform, source.links[k].position, source.links[k].orientation);
+    setPose(transforms[2 + i].transform, source.after_azimuth[k].position, source.after_azimuth[k].orientation);
+    setPose(transforms[3 + i].transform, source.after_elevation[k].position, source.after_elevation[k].orientation);
   }
   // The load frame is aligned with the world frame (only translated), so the wrench reads in world axes.
   setPose(transforms.back().transform, source.snapshot.chain.ends.col(n), kPaperInWorld.conjugate());
@@ -172,26 +248,28 @@ void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_posi
 void fillMarkers(const OutputSource& source, double total_length, double tension_scale, const ros::Time& stamp,
                  visualization_msgs::MarkerArray& msg) {
   const ChainOutputs& c = source.snapshot.chain;
-  const int n = static_cast<int>(c.tension.size());
+  const int n = static_cast<int>(c.tension.size()), first = source.snapshot.first_link;
+  // The line runs over the deployed links only (one marker, replaced each cycle: a link hauled in leaves
+  // nothing behind in rviz).
   visualization_msgs::Marker& line = msg.markers[kCableLine];
-  for (int k = 0; k <= n; ++k) {
-    setPoint(line.points[k], c.ends.col(k));
-    line.colors[k] = tensionColor(c.tension(std::min(k, n - 1)), tension_scale);
+  for (int k = first; k <= n; ++k) {
+    setPoint(line.points[k - first], c.ends.col(k));
+    line.colors[k - first] = tensionColor(c.tension(std::min(k, n - 1)), tension_scale);
   }
-  msg.markers[kLoadSphere].pose.position = line.points[n];
+  msg.markers[kLoadSphere].pose.position = line.points[n - first];
   const double arrow_per_newton = 0.1 * total_length / std::max(tension_scale, 1.0);  // [m/N]
-  const Eigen::Vector3d base = c.ends.col(0), tip = c.ends.col(n);
+  const Eigen::Vector3d base = c.ends.col(first), tip = c.ends.col(n);
   setPoint(msg.markers[kBaseArrow].points[0], base);
   setPoint(msg.markers[kBaseArrow].points[1], base + arrow_per_newton * c.base_force);
   setPoint(msg.markers[kLoadArrow].points[0], tip);
   setPoint(msg.markers[kLoadArrow].points[1], tip + arrow_per_newton * c.load_force);
   char text[160];
   std::snprintf(text, sizeof(text), "tension: blue 0 N, green %.0f N, red %.0f N  (top %.1f N)", 0.5 * tension_scale,
-                tension_scale, c.tension(0));
+                tension_scale, source.snapshot.line_pull);
   visualization_msgs::Marker& label = msg.markers[kScaleText];
   label.text = text;
-  label.pose.position.x = c.ends(0, 0) - 0.3 * total_length;
-  label.pose.position.z = c.ends(2, 0) + 0.1 * total_length;
+  label.pose.position.x = c.ends(0, first) - 0.3 * total_length;
+  label.pose.position.z = c.ends(2, first) + 0.1 * total_length;
   for (auto& m : msg.markers) m.header.stamp = stamp;
 }
 
@@ -200,8 +278,15 @@ void fillCableState(const OutputSource& source, const NodeStatus& status, const 
   const SimulationSnapshot& s = source.snapshot;
   const ChainOutputs& c = s.chain;
   msg.header.stamp = stamp;
-  for (int k = 0; k < c.tension.size(); ++k) msg.tension[k] = c.tension(k);
-  msg.top_tension = c.tension(0);
+  for (int k = 0; k < c.tension.size(); ++k) msg.tension[k] = c.tension(k);  // per slot: 0 on the drum
+  msg.top_tension = s.line_pull;
+  msg.deployed_length = s.deployed_length;
+  msg.line_pull = s.line_pull;
+  msg.winch_speed = s.winch_speed;
+  msg.first_link = static_cast<uint32_t>(s.first_link);
+  msg.deployed_links = static_cast<uint32_t>(c.tension.size() - s.first_link);
+  msg.links_added = static_cast<uint32_t>(source.winch.links_added);
+  msg.links_removed = static_cast<uint32_t>(source.winch.links_removed);
   setVector(msg.load_force, paperToWorld(c.load_force));
   setVector(msg.base_force, paperToWorld(c.base_force));
   msg.kinetic_energy = c.kinetic_energy;
@@ -263,6 +348,25 @@ void fillDiagnostics(const NodeStatus& s, const ros::Time& stamp, diagnostic_msg
                                            double(s.rejected), double(s.stale),    double(s.diverged),
                                            double(s.retried),  s.retried_share};
   for (int i = 0; i < kDiagnosticCount; ++i) format(status.values[i].value, i >= 6 && i <= 10 ? "%.0f" : "%.6g", values[i]);
+  if (static_cast<int>(status.values.size()) < kDiagnosticCount + kWinchCount) return;  // no winch
+  const WinchStatus& w = s.winch;
+  const double winch_values[kWinchCount] = {w.deployed_length, double(w.deployed_links), w.speed, w.line_pull, 0.0,
+                                            double(w.links_added), double(w.links_removed)};
+  for (int i = 0; i < kWinchCount; ++i) {
+    if (i == kWinchCommandKey) continue;
+    format(status.values[kDiagnosticCount + i].value, i == 1 || i >= 5 ? "%.0f" : "%.6g", winch_values[i]);
+  }
+  char command[64];
+  if (w.targeting) {
+    std::snprintf(command, sizeof(command), "to length %.6g m", w.target_length);
+  } else if (w.commanded_speed > 0.0) {
+    std::snprintf(command, sizeof(command), "pay out at %.6g m/s", w.commanded_speed);
+  } else if (w.commanded_speed < 0.0) {
+    std::snprintf(command, sizeof(command), "haul in at %.6g m/s", -w.commanded_speed);
+  } else {
+    std::snprintf(command, sizeof(command), "stop (speed 0)");
+  }
+  status.values[kDiagnosticCount + kWinchCommandKey].value = command;  // within its reserved capacity
 }
 
 }  // namespace cable_dynamics

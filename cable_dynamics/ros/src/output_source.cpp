@@ -14,7 +14,8 @@ bool finite(const SimulationSnapshot& s) {
          finite(c.load_force) && finite(c.base_force) && finite(c.coupling_force) && std::isfinite(c.kinetic_energy) &&
          std::isfinite(c.potential_energy) && std::isfinite(c.elastic_energy) && s.axes.allFinite() &&
          s.twists.allFinite() && std::isfinite(s.dissipated_energy) && std::isfinite(s.work_input) &&
-         std::isfinite(s.total_energy);
+         std::isfinite(s.total_energy) && std::isfinite(s.deployed_length) && std::isfinite(s.winch_speed) &&
+         std::isfinite(s.line_pull) && s.first_link >= 0 && s.first_link < s.chain.tension.size();
 }
 
 bool finite(const PoseVector& poses) {
@@ -33,6 +34,13 @@ bool readOutputs(CableSimulator& sim, const ElasticJoints& joints, OutputSource&
     return false;
   }
   if (!finite(out.snapshot)) return false;
+  WinchReading& w = out.winch;
+  w.present = sim.hasWinch();
+  w.targeting = w.present && sim.winch().targeting();
+  w.commanded_speed = w.present ? sim.winch().commandedSpeed() : 0.0;
+  w.target_length = w.present ? sim.winch().targetLength() : 0.0;
+  w.links_added = sim.linksAdded();
+  w.links_removed = sim.linksRemoved();
   const int n = sim.links();
   if (out.alpha_hint.size() != n) out.alpha_hint = Eigen::VectorXd::Zero(n);
   joints.force(out.snapshot.q, out.spring_force);

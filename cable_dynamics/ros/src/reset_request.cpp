@@ -1,5 +1,6 @@
 #include "cable_dynamics/ros/reset_request.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -20,7 +21,7 @@ std::string refusal(const char* array, int i, const CableFrameNames& names, doub
 }  // namespace
 
 bool checkResetRequest(const std::vector<double>& positions, const std::vector<double>& velocities, int links,
-                       const CableFrameNames& names, std::string& why) {
+                       const CableFrameNames& names, std::string& why, int stored_links) {
   const std::size_t dof = 3 * static_cast<std::size_t>(links);
   if (positions.empty()) {
     if (velocities.empty()) return true;
@@ -42,6 +43,18 @@ bool checkResetRequest(const std::vector<double>& positions, const std::vector<d
   for (std::size_t i = 0; i < velocities.size(); ++i) {
     if (!(std::abs(velocities[i]) <= kMaxResetRate)) {
       why = refusal("velocities", static_cast<int>(i), names, velocities[i], kMaxResetRate, "rad/s");
+      return false;
+    }
+  }
+  const std::size_t drum = 3 * static_cast<std::size_t>(std::max(stored_links, 0));
+  for (const auto* array : {&positions, &velocities}) {
+    for (std::size_t i = 0; i < std::min(drum, array->size()); ++i) {
+      if ((*array)[i] == 0.0) continue;
+      std::ostringstream s;
+      s << (array == &positions ? "positions" : "velocities") << "[" << i << "] (" << names.joint(static_cast<int>(i))
+        << ") = " << (*array)[i] << ": expected 0, the slot is on the winch's drum at the configured deployment "
+        << "(slots 1 to " << stored_links << ")";
+      why = s.str();
       return false;
     }
   }

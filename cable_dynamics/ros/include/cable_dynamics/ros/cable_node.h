@@ -9,9 +9,11 @@
 #include <cable_msgs/GetModel.h>
 #include <cable_msgs/Reset.h>
 #include <cable_msgs/SetPaused.h>
+#include <cable_msgs/SetWinchLength.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TwistStamped.h>
 #include <ros/ros.h>
+#include <std_msgs/Float64.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
@@ -43,6 +45,8 @@ class CableNode {
   bool onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Response& res);
   bool onGetModel(cable_msgs::GetModel::Request& req, cable_msgs::GetModel::Response& res);
   bool onSetPaused(cable_msgs::SetPaused::Request& req, cable_msgs::SetPaused::Response& res);
+  void onWinchSpeed(const std_msgs::Float64::ConstPtr& msg);
+  bool onSetWinchLength(cable_msgs::SetWinchLength::Request& req, cable_msgs::SetWinchLength::Response& res);
 
   /// tf2 lookup of a frame in the world frame, without waiting and without tf2's own warnings.
   bool resolveFrame(const std::string& frame, Eigen::Isometry3d& world_from_frame);
@@ -59,7 +63,8 @@ class CableNode {
   NodeOptions options_;
   CableFrameNames names_;
   std::unique_ptr<CableSimulator> sim_;
-  std::unique_ptr<ElasticJoints> joints_;
+  std::unique_ptr<ElasticJoints> joints_;  ///< the springs of the deployment joints_first_ (effort)
+  int joints_first_ = 0;
   std::unique_ptr<InputGuard> guard_;
   FrameResolver resolver_;
 
@@ -67,8 +72,8 @@ class CableNode {
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher joint_pub_, state_pub_, marker_pub_, wrench_pub_, diagnostics_pub_;
-  ros::Subscriber rov_sub_, base_sub_, current_sub_;
-  ros::ServiceServer reset_srv_, model_srv_, pause_srv_;
+  ros::Subscriber rov_sub_, base_sub_, current_sub_, winch_sub_;
+  ros::ServiceServer reset_srv_, model_srv_, pause_srv_, winch_srv_;
   ros::Timer timer_;
 
   CableOutputs outputs_;  ///< preallocated, written by index every cycle

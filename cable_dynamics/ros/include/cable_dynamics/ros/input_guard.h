@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// \brief Guards the node's inputs (rov_pose, base_pose, current) in one place: finiteness, range, frame,
-///        freshness (stale and future stamps), order, plausibility and jumps; counts what it refuses.
+/// \brief Guards the node's inputs (rov_pose, base_pose, current, winch/speed) in one place: finiteness,
+///        range, frame, freshness (stale and future stamps), order, plausibility and jumps; counts what it
+///        refuses.
 ///        ROS-light (message structs and ros::Time; the tf2 lookup is passed in), no roscore needed.
 
 #include <functional>
@@ -11,6 +12,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TwistStamped.h>
 #include <ros/time.h>
+#include <std_msgs/Float64.h>
 
 #include "cable_dynamics/ros/input_verdict.h"
 #include "cable_dynamics/ros/pose_tracker.h"
@@ -39,6 +41,8 @@ struct GuardSettings {
   double input_timeout = 1.0;         ///< stamps further than this from the clock, either way, are stale [s]
   Eigen::Vector3d base_rest = Eigen::Vector3d::Zero();  ///< the base's rest position, world frame [m]
   double plausible_radius = 100.0;  ///< a first pose must be this close to the base (rov) or its rest (base) [m]
+  bool winch = false;               ///< a winch is configured: winch/speed commands are taken
+  double winch_max_speed = 0.0;     ///< winch.max_speed: faster commands are rejected [m/s]
 };
 
 /// Counters since start.
@@ -63,7 +67,13 @@ class InputGuard {
   InputVerdict current(const geometry_msgs::TwistStamped& msg, const ros::Time& now, const FrameResolver& resolve,
                        Eigen::Vector3d& current);
 
+  /// Judges a winch speed command [m/s, + pays out] (no stamp: no freshness or order rules). Rejected
+  /// without a winch (kNoWinch), when not finite, or beyond winch_max_speed either way (kOutOfRange: a
+  /// command the winch cannot follow is refused, not clamped). When accepted, `speed` is the command.
+  InputVerdict winchSpeed(const std_msgs::Float64& msg, double& speed);
+
   const InputCounters& counters() const { return counters_; }
+  const GuardSettings& settings() const { return settings_; }
 
  private:
   /// What the guard remembers of one topic.

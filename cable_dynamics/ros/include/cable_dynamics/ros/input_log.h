@@ -11,5 +11,7 @@ namespace cable_dynamics {
 
 /// Logs a refused or re-acquired input on `topic` (nothing for an accepted one), with the counters so far.
 void logInput(const char* topic, InputVerdict verdict, const InputCounters& counters, const NodeOptions& options);
+/// Logs a refused winch/speed command (nothing for an accepted one); `max_speed` [m/s] is winch.max_speed.
+void logWinchSpeed(InputVerdict verdict, const InputCounters& counters, double max_speed);
 
 }  // namespace cable_dynamics

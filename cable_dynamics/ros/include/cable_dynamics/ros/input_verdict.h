@@ -10,12 +10,14 @@ enum class InputVerdict {
   kAccepted,     ///< used
   kReacquired,   ///< used: the tracker gave up the old stream and took a consistent new one
   kNonFinite,    ///< a NaN or an infinity in any number of the message (rejected)
-  kOutOfRange,   ///< a position beyond kMaxInputPosition or a current above kMaxCurrentSpeed (rejected)
+  kOutOfRange,   ///< a position beyond kMaxInputPosition, a current above kMaxCurrentSpeed, a winch speed
+                 ///< beyond winch.max_speed (rejected)
   kBadFrame,     ///< an invalid frame name, or one tf2 cannot place in the world frame (rejected)
   kStale,        ///< stamped more than input_timeout before or after the receiver's clock (stale)
   kOutOfOrder,   ///< stamped no later than the last accepted message of the topic (rejected)
   kImplausible,  ///< a first pose too far from the cable (rejected)
   kJump,         ///< a pose that implies moving faster than kMaxInputSpeed (rejected)
+  kNoWinch,      ///< a winch command, but no winch is configured (rejected)
 };
 
 /// true for the verdicts that let the message through.
@@ -35,6 +37,7 @@ inline const char* describe(InputVerdict v) {
     case InputVerdict::kOutOfOrder: return "is not newer than the last accepted one";
     case InputVerdict::kImplausible: return "is too far from the cable for a first pose";
     case InputVerdict::kJump: return "jumps faster than the speed limit";
+    case InputVerdict::kNoWinch: return "commands a winch, but no winch is configured (config key winch:)";
   }
   return "?";
 }

@@ -19,14 +19,35 @@
 
 namespace cable_dynamics {
 
-/// Every message the node publishes, preallocated.
+/// Every message the node publishes, preallocated for every slot. With a winch the joint states, the link
+/// frames and the cable's line carry the deployed slots [first_link, n) only (shapeOutputs); cable_state's
+/// tension keeps one entry per slot (0 on the drum).
 struct CableOutputs {
-  sensor_msgs::JointState joints;
-  std::vector<geometry_msgs::TransformStamped> transforms;  ///< world -> paper, 3 per link, the load
+  sensor_msgs::JointState joints;                           ///< 3 per deployed link, slot order
+  std::vector<geometry_msgs::TransformStamped> transforms;  ///< world -> paper, 3 per deployed link, the load
   visualization_msgs::MarkerArray markers;                  ///< cable, load, base_force, load_force, tension_scale
   cable_msgs::CableState state;
   geometry_msgs::WrenchStamped wrench;
   diagnostic_msgs::DiagnosticArray diagnostics;
+  // The shape: which slots the messages above carry, and the named entries of the drum's slots, kept
+  // aside (moved, never copied: no allocation) until their links are paid out.
+  int slots = 0;       ///< n, every slot
+  int first_link = 0;  ///< the messages carry slots [first_link, n)
+  std::vector<std::string> stowed_joint_names;                     ///< slots [0, first_link), 3 each, slot order
+  std::vector<geometry_msgs::TransformStamped> stowed_transforms;  ///< slots [0, first_link), 3 each, slot order
+};
+
+/// The winch as /diagnostics reports it (present only with a winch).
+struct WinchStatus {
+  bool present = false;
+  double deployed_length = 0.0;  ///< [m]
+  double speed = 0.0;            ///< + paying out [m/s]
+  double line_pull = 0.0;        ///< [N]
+  unsigned deployed_links = 0;
+  bool targeting = false;        ///< driving to target_length, else running at commanded_speed
+  double commanded_speed = 0.0;  ///< [m/s]
+  double target_length = 0.0;    ///< [m]
+  unsigned links_added = 0, links_removed = 0;
 };
 
 /// Counters and timing reported in cable_state and /diagnostics.
@@ -42,27 +63,40 @@ struct NodeStatus {
   bool diverged_recently = false;  ///< a step diverged since the last diagnostics
   bool dropped_recently = false;   ///< simulated time was dropped since the last diagnostics
   unsigned received = 0, rejected = 0, stale = 0, diverged = 0, retried = 0;
+  WinchStatus winch;
 };
 
-/// Sizes and names every message once: 3n joints, 2 + 3n transforms, 5 markers, n tensions.
+/// Sizes and names every message once: 3n joints, 2 + 3n transforms, 5 markers, n tensions (capacity for
+/// every slot), then shapes them for the configured deployment (shapeOutputs(params.winch.stored_links)).
 void prepareOutputs(const CableParams& params, const CableFrameNames& names, const std::string& world_frame,
                     CableOutputs& out);
+/// Shapes the messages for the deployed slots [first_link, n): 3 (n - first_link) joints, 2 + 3 (n -
+/// first_link) transforms, n - first_link + 1 points of the cable's line. Names and frames move between the
+/// messages and the stowed lists, one slot at a time, within the capacity reserved by prepareOutputs: no
+/// allocation. Nothing to do when the shape is already that one.
+void shapeOutputs(int first_link, CableOutputs& out);
+/// The WinchStatus of an instant (present = false without a winch).
+WinchStatus winchStatus(const OutputSource& source);
 
-/// Joint states: the paper's coordinates [rad], rates [rad/s], effort = the springs' torque [N m].
+// The fill functions below need the messages shaped for the source's snapshot.first_link (shapeOutputs).
+
+/// Joint states of the deployed links: the paper's coordinates [rad], rates [rad/s], effort = the springs'
+/// torque [N m].
 void fillJointState(const OutputSource& source, const ros::Time& stamp, sensor_msgs::JointState& msg);
-/// TF: world -> paper frame (at `base_position` [m], half a turn about x), the link frames, the load frame
-/// (axes parallel to the world frame).
+/// TF: world -> paper frame (at `base_position` [m], half a turn about x), the deployed links' frames, the
+/// load frame (axes parallel to the world frame).
 void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
                     std::vector<geometry_msgs::TransformStamped>& transforms);
-/// Markers: the cable coloured by tension against `tension_scale` [N], the load, the force arrows, the scale.
+/// Markers: the deployed cable coloured by tension against `tension_scale` [N], the load, the force arrows,
+/// the scale.
 void fillMarkers(const OutputSource& source, double total_length, double tension_scale, const ros::Time& stamp,
                  visualization_msgs::MarkerArray& msg);
-/// cable_state: tensions, forces (world frame), energies, timing and counters.
+/// cable_state: tensions (per slot), forces (world frame), energies, the winch, timing and counters.
 void fillCableState(const OutputSource& source, const NodeStatus& status, const ros::Time& stamp,
                     cable_msgs::CableState& msg);
 /// The force on the ROV (world axes): the coupling's reaction when attached, else the force on the load [N].
 void fillWrench(const OutputSource& source, LoadMode mode, const ros::Time& stamp, geometry_msgs::WrenchStamped& msg);
-/// /diagnostics: one status with the level rules of README.md.
+/// /diagnostics: one status with the level rules of README.md (and the winch's values with a winch).
 void fillDiagnostics(const NodeStatus& status, const ros::Time& stamp, diagnostic_msgs::DiagnosticArray& msg);
 
 /// The diagnostics level and message for a status (README.md: OK, WARN behind real time or past

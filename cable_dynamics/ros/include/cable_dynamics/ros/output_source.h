@@ -11,9 +11,20 @@
 
 namespace cable_dynamics {
 
+/// What the node reports of the winch besides the snapshot's deployed length, speed and line pull.
+struct WinchReading {
+  bool present = false;          ///< a winch is configured
+  bool targeting = false;        ///< driving to target_length (else running at commanded_speed)
+  double commanded_speed = 0.0;  ///< the speed command, + paying out [m/s]
+  double target_length = 0.0;    ///< the length command [m] (when targeting)
+  long links_added = 0;          ///< since reset
+  long links_removed = 0;        ///< since reset
+};
+
 /// The published instant, sized once for n links and refilled every cycle without allocating.
 struct OutputSource {
   SimulationSnapshot snapshot;
+  WinchReading winch;
   Eigen::VectorXd spring_force;      ///< (3n) dV/dq of the joint springs (dampers excluded); JointState effort = -this [N m]
   PoseVector links;                  ///< (n) link frames, paper frame
   PoseVector after_azimuth;          ///< (n) the URDF's frame after the azimuth joint, paper frame
