@@ -12,6 +12,7 @@
 
 #include <cable_msgs/GetModel.h>
 #include <cable_msgs/Reset.h>
+#include <cable_msgs/ResetToEquilibrium.h>
 #include <cable_msgs/SetWinchLength.h>
 #include <gtest/gtest.h>
 #include <std_msgs/Float64.h>
@@ -267,8 +268,8 @@ TEST_F(WinchNodeTest, SetLengthHaulsInToIt) {
   EXPECT_TRUE(srv.response.success) << srv.response.message;
   EXPECT_GT(srv.response.deployed_length, 30.0);
   EXPECT_NE(srv.response.message.find("25"), std::string::npos) << srv.response.message;
-  // At the target the winch's speed settles to ~1e-6 m/s (the core's stopping law), not to an exact 0.
-  ASSERT_TRUE(waitFor([] { return std::abs(state().deployed_length - 25.0) < 1e-3 && std::abs(state().winch_speed) < 1e-4; }, 60.0))
+  // At the target the winch stops: its speed is exactly 0 (the core's stopping law, test_winch).
+  ASSERT_TRUE(waitFor([] { return std::abs(state().deployed_length - 25.0) < 1e-3 && state().winch_speed == 0.0; }, 60.0))
       << "deployed " << state().deployed_length << " m, speed " << state().winch_speed << " m/s after 60 s";
   spinFor(0.5);
   EXPECT_NEAR(state().deployed_length, 25.0, 1e-3);
@@ -283,6 +284,30 @@ TEST_F(WinchNodeTest, SetLengthHaulsInToIt) {
   // At rest at 25 m: the static line pull.
   spinFor(1.0);
   EXPECT_NEAR(state().line_pull / quasiStaticPull(25.0, 0.0), 1.0, 0.01) << state().line_pull;
+  EXPECT_TRUE(recorder->non_finite.empty()) << recorder->non_finite;
+}
+
+TEST_F(WinchNodeTest, ResetToEquilibriumPutsTheCableAtRest) {
+  // After the haul-in the cable still swings a little; the service puts it at rest in its static shape
+  // at the present deployed length (straight down in still water): no joint moves afterwards, and the
+  // line pull is the static one.
+  cable_msgs::ResetToEquilibrium srv;
+  ASSERT_TRUE(ros::service::waitForService(kNs + "/reset_to_equilibrium", ros::Duration(10.0)));
+  const double length = state().deployed_length;
+  ASSERT_TRUE(ros::service::call(kNs + "/reset_to_equilibrium", srv));
+  ASSERT_TRUE(srv.response.success) << srv.response.message;
+  EXPECT_LT(srv.response.residual, 1e-9);
+  EXPECT_NEAR(srv.response.line_pull / quasiStaticPull(length, 0.0), 1.0, 1e-9);
+  spinFor(0.5);
+  const double since = state().sim_time;
+  double fastest = 0.0;
+  for (int i = 0; i < 50; ++i) {
+    spinFor(0.02);
+    for (double v : recorder->joints.velocity) fastest = std::max(fastest, std::abs(v));
+  }
+  EXPECT_GT(state().sim_time, since + 0.2) << "the node stopped stepping";
+  EXPECT_LT(fastest, 1e-9) << "a joint moves after the reset to equilibrium [rad/s]";
+  EXPECT_NEAR(state().line_pull / quasiStaticPull(length, 0.0), 1.0, 1e-6);
   EXPECT_TRUE(recorder->non_finite.empty()) << recorder->non_finite;
 }
 

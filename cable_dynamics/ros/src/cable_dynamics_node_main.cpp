@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {  // ConfigError too: a bad or missing parameter
     ROS_FATAL_STREAM("cable_dynamics_node: bad parameter in " << private_nh.getNamespace() << ": " << e.what());
     return 2;
+  } catch (const std::runtime_error& e) {  // initial.mode: equilibrium without an equilibrium
+    ROS_FATAL_STREAM("cable_dynamics_node: cannot start in " << private_nh.getNamespace() << ": " << e.what());
+    return 2;
   }
   return 0;
 }

@@ -91,6 +91,7 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   winch_sub_ = nh_.subscribe("winch/speed", kInputQueueSize, &CableNode::onWinchSpeed, this);
   winch_srv_ = nh_.advertiseService("winch/set_length", &CableNode::onSetWinchLength, this);
   reset_srv_ = nh_.advertiseService("reset", &CableNode::onReset, this);
+  equilibrium_srv_ = nh_.advertiseService("reset_to_equilibrium", &CableNode::onResetToEquilibrium, this);
   model_srv_ = nh_.advertiseService("get_model", &CableNode::onGetModel, this);
   pause_srv_ = nh_.advertiseService("set_paused", &CableNode::onSetPaused, this);
   timer_ = nh_.createTimer(ros::Duration(1.0 / options_.rate), &CableNode::onTimer, this);
@@ -291,6 +292,28 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
   source_.alpha_hint.setZero();
   res.success = true;
   res.message = "reset";
+  return true;
+}
+
+bool CableNode::onResetToEquilibrium(cable_msgs::ResetToEquilibrium::Request&,
+                                     cable_msgs::ResetToEquilibrium::Response& res) {
+  const StaticSolution s = sim_->resetToEquilibrium();
+  res.success = s.converged;
+  res.iterations = static_cast<uint32_t>(s.iterations);
+  res.residual = s.residual;
+  if (!s.converged) {
+    res.message = s.message;
+    ROS_WARN_STREAM("cable_dynamics: reset_to_equilibrium refused: " << s.message);
+    return true;
+  }
+  SimulationSnapshot snapshot;
+  sim_->snapshot(snapshot);
+  res.line_pull = snapshot.line_pull;
+  source_.alpha_hint.setZero();
+  std::ostringstream text;
+  text << "at rest in the static equilibrium (" << s.iterations << " Newton iterations, residual " << s.residual
+       << ", line pull " << snapshot.line_pull << " N)";
+  res.message = text.str();
   return true;
 }
 

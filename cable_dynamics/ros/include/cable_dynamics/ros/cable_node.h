@@ -8,6 +8,7 @@
 
 #include <cable_msgs/GetModel.h>
 #include <cable_msgs/Reset.h>
+#include <cable_msgs/ResetToEquilibrium.h>
 #include <cable_msgs/SetPaused.h>
 #include <cable_msgs/SetWinchLength.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -43,6 +44,7 @@ class CableNode {
   void onBasePose(const geometry_msgs::PoseStamped::ConstPtr& msg);
   void onCurrent(const geometry_msgs::TwistStamped::ConstPtr& msg);
   bool onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Response& res);
+  bool onResetToEquilibrium(cable_msgs::ResetToEquilibrium::Request& req, cable_msgs::ResetToEquilibrium::Response& res);
   bool onGetModel(cable_msgs::GetModel::Request& req, cable_msgs::GetModel::Response& res);
   bool onSetPaused(cable_msgs::SetPaused::Request& req, cable_msgs::SetPaused::Response& res);
   void onWinchSpeed(const std_msgs::Float64::ConstPtr& msg);
@@ -73,7 +75,7 @@ class CableNode {
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher joint_pub_, state_pub_, marker_pub_, wrench_pub_, diagnostics_pub_;
   ros::Subscriber rov_sub_, base_sub_, current_sub_, winch_sub_;
-  ros::ServiceServer reset_srv_, model_srv_, pause_srv_, winch_srv_;
+  ros::ServiceServer reset_srv_, equilibrium_srv_, model_srv_, pause_srv_, winch_srv_;
   ros::Timer timer_;
 
   CableOutputs outputs_;  ///< preallocated, written by index every cycle
