@@ -100,3 +100,6 @@ target_link_libraries(test_winch cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
 catkin_add_gtest(test_equilibrium_start test/test_equilibrium_start.cpp)
 target_link_libraries(test_equilibrium_start cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+catkin_add_gtest(test_body_motion test/test_body_motion.cpp)
+target_link_libraries(test_body_motion cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

@@ -29,6 +29,7 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/simulation/time_schemes/time_scheme.cpp
   ${CABLE_CORE_DIR}/src/simulation/time_schemes/rk4.cpp
   ${CABLE_CORE_DIR}/src/simulation/time_schemes/semi_implicit.cpp
+  ${CABLE_CORE_DIR}/src/simulation/body_motion.cpp
   ${CABLE_CORE_DIR}/src/simulation/winch.cpp
   ${CABLE_CORE_DIR}/src/simulation/winch_links.cpp
   ${CABLE_CORE_DIR}/src/simulation/end_conditions.cpp

@@ -84,6 +84,8 @@ MotionParams parseMotion(Section motion) {
   m.period = motion.number("period", 10.0, 0.0, 1e6, true, "s");
   m.phase = motion.number("phase", 0.0, -2.0 * M_PI, 2.0 * M_PI, false, "rad");
   m.velocity = vector3(motion, "velocity", 100.0, "m/s");
+  m.attitude_amplitude = vector3(motion, "attitude_amplitude", M_PI, "rad");
+  m.attitude_phase = vector3(motion, "attitude_phase", 2.0 * M_PI, "rad");
   motion.rejectUnknownKeys();
   return m;
 }
@@ -100,6 +102,7 @@ void parseLoad(Section load, CableParams& p) {
   p.load.coupling_damping = coupling.number("damping", 2.0e3, 0.0, 1e9, false, "N s/m");
   coupling.rejectUnknownKeys();
   p.load.motion = parseMotion(load.sub("motion"));
+  p.load.attachment = vector3(load, "attachment", 1e3, "m");
   load.rejectUnknownKeys();
 }
 
@@ -209,6 +212,7 @@ CableParams parseConfig(const YAML::Node& root) {
   parseLoad(top.sub("load"), p);
   Section base = top.sub("base");
   p.base.motion = parseMotion(base.sub("motion"));
+  p.base.hang_off = vector3(base, "hang_off", 1e3, "m");
   p.base.fixity = base.choice("fixity", "clamped", {"clamped", "pinned"}) == "clamped" ? BaseFixity::kClamped
                                                                                        : BaseFixity::kPinned;
   if (base.has("direction")) {

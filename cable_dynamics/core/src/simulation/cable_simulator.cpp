@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cable_dynamics/dynamics/frames.h"
 #include "cable_dynamics/params/states.h"
 #include "cable_dynamics/simulation/winch_links.h"
 
@@ -166,7 +167,7 @@ void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::Vector
   dynamics_.setAzimuthReference(psi);
   time_ = 0.0;
   Eigen::Vector3d position, velocity, acceleration;
-  motionAt(params_.base.motion, 0.0, position, velocity, acceleration);
+  motionAt(params_.base.motion, params_.base.hang_off, 0.0, position, velocity, acceleration);
   Eigen::Vector3d tip = position;
   for (int k = 0; k < links(); ++k) tip += properties().length(k) * x_.segment<3>(StateLayout::axis(k));
   ends_.setInitialTip(tip);
@@ -267,6 +268,12 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.deployed_length = deployedLength();
   out.winch_speed = hasWinch() ? ends_.winch().motion().speed : 0.0;
   out.line_pull = out.chain.tension(out.first_link);
+  out.vessel_attitude = ends_.baseAttitude(time_);
+  out.rov_attitude = ends_.loadAttitude(time_);
+  out.vessel = wrenchAboutOrigin(paperToWorld(out.chain.base_force), out.vessel_attitude, params_.base.hang_off);
+  const Eigen::Vector3d on_rov =
+      params_.load.mode == LoadMode::kAttached ? Eigen::Vector3d(-out.chain.coupling_force) : out.chain.load_force;
+  out.rov = wrenchAboutOrigin(paperToWorld(on_rov), out.rov_attitude, params_.load.attachment);
 }
 
 void CableSimulator::setCurrent(const Eigen::Vector3d& current) {
@@ -275,14 +282,16 @@ void CableSimulator::setCurrent(const Eigen::Vector3d& current) {
   scheme_->forget();
 }
 
-void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
-  ends_.setLoadTarget(position, velocity);
+void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                                   const Eigen::Quaterniond& attitude) {
+  ends_.setLoadTarget(position, velocity, attitude);
   start_balance_known_ = false;
   scheme_->forget();
 }
 
-void CableSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
-  ends_.setBaseTarget(position, velocity);
+void CableSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                                   const Eigen::Quaterniond& attitude) {
+  ends_.setBaseTarget(position, velocity, attitude);
   start_balance_known_ = false;
   drift_reference_known_ = false;
   scheme_->forget();

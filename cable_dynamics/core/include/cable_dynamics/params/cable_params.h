@@ -73,6 +73,10 @@ struct MotionParams {
   double period = 10.0;                                 ///< [s]
   double phase = 0.0;                                   ///< [rad]; pi/2 starts at rest
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();   ///< [m/s]
+  /// Roll, pitch and yaw (R = Rz(yaw) Ry(pitch) Rx(roll)), each amplitude sin(2 pi t / period + phase)
+  /// [rad]: they move the body's points off its origin (the hang-off point, the attachment).
+  Eigen::Vector3d attitude_amplitude = Eigen::Vector3d::Zero();
+  Eigen::Vector3d attitude_phase = Eigen::Vector3d::Zero();  ///< [rad]
 };
 
 /// The terminal load (ROV, clump weight or nothing).
@@ -86,11 +90,17 @@ struct LoadParams {
   double coupling_damping = 2.0e3;   ///< [N s/m]
   /// Anchor / ROV target relative to the load's initial position (modes anchored, attached).
   MotionParams motion;
+  /// Where the tether enters the ROV, in the ROV's frame (x forward, z up at rest) [m]: the target the
+  /// tip is coupled to is this point of the ROV, and the cable's force there puts a moment on it.
+  Eigen::Vector3d attachment = Eigen::Vector3d::Zero();
 };
 
 /// The cable's base (vessel, cage or fixed point).
 struct BaseParams {
-  MotionParams motion;  ///< prescribed motion of the base relative to its initial position
+  MotionParams motion;  ///< prescribed motion of the vessel relative to its initial pose
+  /// The hang-off point (A-frame sheave, moonpool) in the vessel's frame, from the vessel's origin [m]:
+  /// the base of the cable, which the vessel's attitude moves on an arc.
+  Eigen::Vector3d hang_off = Eigen::Vector3d::Zero();
   /// How the base holds link 1 (bending model): clamped along `direction` (joint 1's bend and twist
   /// springs and dampers act against the clamp), or pinned (free to rotate: joint 1 has none).
   BaseFixity fixity = BaseFixity::kClamped;

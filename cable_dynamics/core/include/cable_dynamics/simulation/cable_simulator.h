@@ -10,6 +10,7 @@
 
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 #include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/simulation/body_motion.h"
 #include "cable_dynamics/simulation/end_conditions.h"
 #include "cable_dynamics/simulation/stable_step.h"
 #include "cable_dynamics/simulation/step_check.h"
@@ -35,6 +36,14 @@ struct SimulationSnapshot {
   double deployed_length = 0.0;  ///< [m]
   double winch_speed = 0.0;      ///< + paying out [m/s]
   double line_pull = 0.0;        ///< tension at the winch, the base link's base end [N]
+  // The ends as bodies (world frame, z up; body axes as the attitudes give them).
+  Eigen::Quaterniond vessel_attitude = Eigen::Quaterniond::Identity();  ///< world from vessel
+  Eigen::Quaterniond rov_attitude = Eigen::Quaterniond::Identity();     ///< world from ROV
+  /// The cable's force on the vessel at the hang-off point, about the vessel's origin [N], [N m].
+  BodyWrench vessel;
+  /// The cable's force on the ROV at the attachment point (the coupling's reaction when attached; the
+  /// load's force otherwise), about the ROV's origin [N], [N m].
+  BodyWrench rov;
 };
 
 /// Outcome of one step.
@@ -111,11 +120,15 @@ class CableSimulator {
 
   /// Uniform current [m/s], replacing the configured field until reset().
   void setCurrent(const Eigen::Vector3d& current);
-  /// External target for the load (modes anchored/attached) [m], [m/s]; replaces the configured motion
+  /// External target for the load (modes anchored/attached) [m], [m/s]: the ROV's attachment point,
+  /// with the ROV's attitude (world from ROV) for the wrench on it; replaces the configured motion
   /// until reset().
-  void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
-  /// External base position and velocity [m], [m/s]; replaces the configured motion until reset().
-  void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
+  void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                     const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
+  /// External base position and velocity [m], [m/s]: the vessel's hang-off point, with the vessel's
+  /// attitude for the wrench on it; replaces the configured motion until reset().
+  void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                     const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
 
   /// How far the energy balance has drifted since reset (schemes that balance energy: RK4), as a
   /// fraction of the largest mechanical energy scale seen [-]; an unstable mode that the per-step

@@ -5,6 +5,7 @@
 ///        rest position; the dynamics get them in the paper frame (EndInputs).
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "cable_dynamics/dynamics/state_layout.h"
 #include "cable_dynamics/params/cable_params.h"
@@ -12,10 +13,11 @@
 
 namespace cable_dynamics {
 
-/// Position, velocity and acceleration of a prescribed motion at time t [s], in the paper frame
-/// [m, m/s, m/s^2].
-void motionAt(const MotionParams& motion, double t, Eigen::Vector3d& position, Eigen::Vector3d& velocity,
-              Eigen::Vector3d& acceleration);
+/// Position, velocity and acceleration at time t [s] of the point `offset` (body frame [m]) of a body
+/// moving by `motion`, relative to that point's rest position, in the paper frame [m, m/s, m/s^2]
+/// (body_motion.h).
+void motionAt(const MotionParams& motion, const Eigen::Vector3d& offset, double t, Eigen::Vector3d& position,
+              Eigen::Vector3d& velocity, Eigen::Vector3d& acceleration);
 
 /// The ends' inputs over time: the configured motions until an external target replaces them.
 class EndConditions {
@@ -37,10 +39,17 @@ class EndConditions {
   double outboardLength() const { return outboard_length_; }
   /// The tip's start position (paper frame) [m], which the load's configured motion is relative to.
   void setInitialTip(const Eigen::Vector3d& initial_tip) { initial_tip_ = initial_tip; }
-  /// External load target (world axes) [m], [m/s]; replaces the configured motion until reset().
-  void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
-  /// External base position and velocity (world axes) [m], [m/s]; replaces the configured motion.
-  void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
+  /// External load target (world axes) [m], [m/s]: the attachment point of the ROV, whose attitude is
+  /// `attitude` (world from ROV); replaces the configured motion until reset().
+  void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                     const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
+  /// External base position and velocity (world axes) [m], [m/s]: the hang-off point of the vessel,
+  /// whose attitude is `attitude`; replaces the configured motion.
+  void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                     const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
+  /// The vessel's and the ROV's attitude at time t (world from body): external, or the configured motion's.
+  Eigen::Quaterniond baseAttitude(double t) const;
+  Eigen::Quaterniond loadAttitude(double t) const;
 
  private:
   BaseParams base_;
@@ -53,6 +62,7 @@ class EndConditions {
   // External targets, converted to the paper frame once [m], [m/s].
   Eigen::Vector3d load_position_ = Eigen::Vector3d::Zero(), load_velocity_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d base_position_ = Eigen::Vector3d::Zero(), base_velocity_ = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond load_attitude_ = Eigen::Quaterniond::Identity(), base_attitude_ = Eigen::Quaterniond::Identity();
 };
 
 }  // namespace cable_dynamics
