@@ -51,10 +51,11 @@ class GuardTest : public ::testing::Test {
     return s;
   }
   InputVerdict rov(const geometry_msgs::PoseStamped& msg, double now) {
-    return guard.pose(InputGuard::kRovPose, msg, ros::Time(now), resolve, position, velocity);
+    return guard.pose(InputGuard::kRovPose, msg, ros::Time(now), resolve, position, velocity, attitude);
   }
   InputGuard guard;
   Eigen::Vector3d position, velocity;
+  Eigen::Quaterniond attitude;
 };
 
 TEST_F(GuardTest, NonFiniteAndHugeValuesAreRejectedFirst) {
@@ -79,7 +80,7 @@ TEST_F(GuardTest, FramesAreCheckedByNameBeforeTf) {
   };
   for (const char* bad : {"/world", "a b", "nowhere", " world", "world\n"}) {
     EXPECT_EQ(guard.pose(InputGuard::kRovPose, pose(0, 0, -10, 100.0, bad), ros::Time(100.0), counting, position,
-                         velocity),
+                         velocity, attitude),
               InputVerdict::kBadFrame)
         << bad;
   }

@@ -46,6 +46,8 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   guard.input_timeout = options_.input_timeout;
   guard.base_rest = options_.base_position;
   guard.plausible_radius = 2.0 * params_.totalLength() + 10.0;  // an ROV beyond it cannot be on this cable
+  guard.rov_attachment = params_.load.attachment;
+  guard.base_hang_off = params_.base.hang_off;
   guard.winch = params_.winch.enabled;
   guard.winch_max_speed = params_.winch.max_speed;
   guard_ = std::make_unique<InputGuard>(guard);
@@ -83,6 +85,9 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   state_pub_ = nh_.advertise<cable_msgs::CableState>("cable_state", 10);
   marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("cable_markers", 2);
   wrench_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("rov_wrench", 10);
+  wrench_world_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("rov_wrench_world", 10);
+  base_wrench_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("base_wrench", 10);
+  base_wrench_world_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("base_wrench_world", 10);
   diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 5);
   rov_sub_ = nh_.subscribe("rov_pose", kInputQueueSize, &CableNode::onRovPose, this);
   base_sub_ = nh_.subscribe("base_pose", kInputQueueSize, &CableNode::onBasePose, this);
@@ -110,11 +115,12 @@ bool CableNode::resolveFrame(const std::string& frame, Eigen::Isometry3d& world_
 
 void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   Eigen::Vector3d position, velocity;
+  Eigen::Quaterniond attitude;
   const InputVerdict verdict =
-      guard_->pose(InputGuard::kRovPose, *msg, ros::Time::now(), resolver_, position, velocity);
+      guard_->pose(InputGuard::kRovPose, *msg, ros::Time::now(), resolver_, position, velocity, attitude);
   logInput("rov_pose", verdict, guard_->counters(), options_);
   if (!isAccepted(verdict)) return;
-  sim_->setLoadTarget(position - options_.base_position, velocity);
+  sim_->setLoadTarget(position - options_.base_position, velocity, attitude);  // the attachment point
   if (params_.load.mode == LoadMode::kFree) {
     ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is free: the pose is ignored (use attached)");
   }
@@ -122,10 +128,12 @@ void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
 
 void CableNode::onBasePose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   Eigen::Vector3d position, velocity;
+  Eigen::Quaterniond attitude;
   const InputVerdict verdict =
-      guard_->pose(InputGuard::kBasePose, *msg, ros::Time::now(), resolver_, position, velocity);
+      guard_->pose(InputGuard::kBasePose, *msg, ros::Time::now(), resolver_, position, velocity, attitude);
   logInput("base_pose", verdict, guard_->counters(), options_);
-  if (isAccepted(verdict)) sim_->setBaseTarget(position - options_.base_position, velocity);
+  // The hang-off point, relative to where it is at rest (ros.base_position).
+  if (isAccepted(verdict)) sim_->setBaseTarget(position - options_.base_position, velocity, attitude);
 }
 
 void CableNode::onCurrent(const geometry_msgs::TwistStamped::ConstPtr& msg) {
@@ -252,7 +260,7 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   fillTransforms(source_, options_.base_position, stamp, outputs_.transforms);
   fillMarkers(source_, params_.totalLength(), scale, stamp, outputs_.markers);
   fillCableState(source_, status_, stamp, outputs_.state);
-  fillWrench(source_, params_.load.mode, stamp, outputs_.wrench);
+  fillWrenches(source_, options_.base_position, stamp, outputs_);
   // Never a non-finite number out, even one derived from a finite state (an overflowing arrow).
   if (!allFinite(outputs_)) {
     recoverFromDivergence("non-finite output at t = " + std::to_string(sim_->time()) + " s (nothing published)");
@@ -260,9 +268,13 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   }
   joint_pub_.publish(outputs_.joints);
   tf_broadcaster_.sendTransform(outputs_.transforms);
+  tf_broadcaster_.sendTransform(outputs_.body_transforms);
   marker_pub_.publish(outputs_.markers);
   state_pub_.publish(outputs_.state);
   wrench_pub_.publish(outputs_.wrench);
+  wrench_world_pub_.publish(outputs_.wrench_world);
+  base_wrench_pub_.publish(outputs_.base_wrench);
+  base_wrench_world_pub_.publish(outputs_.base_wrench_world);
   last_stamp_ = stamp;
 }
 

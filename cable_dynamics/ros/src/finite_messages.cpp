@@ -69,7 +69,8 @@ bool allFinite(const NodeStatus& s) {
 
 bool allFinite(const CableOutputs& o) {
   return allFinite(o.joints) && allFinite(o.transforms) && allFinite(o.markers) && allFinite(o.state) &&
-         allFinite(o.wrench);
+         allFinite(o.wrench) && allFinite(o.wrench_world) && allFinite(o.base_wrench) &&
+         allFinite(o.base_wrench_world) && allFinite(o.body_transforms);
 }
 
 }  // namespace cable_dynamics

@@ -76,7 +76,8 @@ InputVerdict InputGuard::settle(Topic topic, InputVerdict verdict, const ros::Ti
 }
 
 InputVerdict InputGuard::pose(Topic topic, const geometry_msgs::PoseStamped& msg, const ros::Time& now,
-                              const FrameResolver& resolve, Eigen::Vector3d& position, Eigen::Vector3d& velocity) {
+                              const FrameResolver& resolve, Eigen::Vector3d& position, Eigen::Vector3d& velocity,
+                              Eigen::Quaterniond& attitude) {
   ++counters_.received;
   const ros::Time& stamp = msg.header.stamp;
   if (!finite(msg.pose)) return settle(topic, InputVerdict::kNonFinite, stamp, now);
@@ -85,8 +86,17 @@ InputVerdict InputGuard::pose(Topic topic, const geometry_msgs::PoseStamped& msg
   Eigen::Isometry3d world_from_frame;
   const InputVerdict frame = frameTransform(msg.header.frame_id, resolve, world_from_frame);
   if (!isAccepted(frame)) return settle(topic, frame, stamp, now);
-  const Eigen::Vector3d world = world_from_frame * raw;
+  const geometry_msgs::Quaternion& o = msg.pose.orientation;
+  Eigen::Quaterniond in_frame(o.w, o.x, o.y, o.z);
+  if (in_frame.norm() < 1e-9) {
+    in_frame = Eigen::Quaterniond::Identity();  // an unset orientation: no rotation
+  } else {
+    in_frame.normalize();
+  }
+  const Eigen::Vector3d& body_point = topic == kRovPose ? settings_.rov_attachment : settings_.base_hang_off;
+  const Eigen::Vector3d world = world_from_frame * (raw + in_frame * body_point);
   if (!inRange(world)) return settle(topic, InputVerdict::kOutOfRange, stamp, now);
+  attitude = Eigen::Quaterniond(world_from_frame.linear()) * in_frame;
   const InputVerdict timing = checkStamp(topic, stamp, now);
   if (!isAccepted(timing)) return settle(topic, timing, stamp, now);
   // The ROV's first pose is judged against the base's position; the base's against its rest position.

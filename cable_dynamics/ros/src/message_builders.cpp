@@ -153,7 +153,14 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   out.state.tension.assign(n, 0.0);
   out.state.deployed_links = static_cast<uint32_t>(n);
   out.state.header.frame_id = world_frame;
-  out.wrench.header.frame_id = names.load();  // at the ROV, axes parallel to the world frame's
+  out.wrench.header.frame_id = names.rov();           // about the ROV's origin, in its axes
+  out.wrench_world.header.frame_id = names.load();    // at the load, axes parallel to the world frame's
+  out.base_wrench.header.frame_id = names.vessel();   // about the vessel's origin, in its axes
+  out.base_wrench_world.header.frame_id = world_frame;  // about the vessel's origin, in world axes
+  out.body_transforms.resize(2);
+  for (auto& t : out.body_transforms) t.header.frame_id = world_frame;
+  out.body_transforms[0].child_frame_id = names.vessel();
+  out.body_transforms[1].child_frame_id = names.rov();
 
   out.diagnostics.status.resize(1);
   diagnostic_msgs::DiagnosticStatus& status = out.diagnostics.status[0];
@@ -305,12 +312,21 @@ void fillCableState(const OutputSource& source, const NodeStatus& status, const 
   msg.retried_steps = status.retried;
 }
 
-void fillWrench(const OutputSource& source, LoadMode mode, const ros::Time& stamp, geometry_msgs::WrenchStamped& msg) {
-  const ChainOutputs& c = source.snapshot.chain;
-  // The ROV feels the coupling's reaction when attached; otherwise the load is the ROV.
-  const Eigen::Vector3d on_rov = mode == LoadMode::kAttached ? Eigen::Vector3d(-c.coupling_force) : c.load_force;
-  msg.header.stamp = stamp;
-  setVector(msg.wrench.force, paperToWorld(on_rov));
+void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
+                  CableOutputs& out) {
+  const SimulationSnapshot& s = source.snapshot;
+  const auto set = [&stamp](geometry_msgs::WrenchStamped& msg, const Eigen::Vector3d& force, const Eigen::Vector3d& moment) {
+    msg.header.stamp = stamp;
+    setVector(msg.wrench.force, force);
+    setVector(msg.wrench.torque, moment);
+  };
+  set(out.wrench, s.rov.force_body, s.rov.moment_body);
+  set(out.wrench_world, s.rov.force_world, Eigen::Vector3d::Zero());
+  set(out.base_wrench, s.vessel.force_body, s.vessel.moment_body);
+  set(out.base_wrench_world, s.vessel.force_world, s.vessel.moment_world);
+  setPose(out.body_transforms[0].transform, base_position + s.vessel_origin, s.vessel_attitude);
+  setPose(out.body_transforms[1].transform, base_position + s.rov_origin, s.rov_attitude);
+  for (auto& t : out.body_transforms) t.header.stamp = stamp;
 }
 
 unsigned char diagnosticLevel(const NodeStatus& s, std::string& message) {

@@ -270,6 +270,10 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.line_pull = out.chain.tension(out.first_link);
   out.vessel_attitude = ends_.baseAttitude(time_);
   out.rov_attitude = ends_.loadAttitude(time_);
+  const EndInputs ends = ends_.at(time_);
+  out.vessel_origin = paperToWorld(ends.base_position) - out.vessel_attitude * params_.base.hang_off;
+  out.rov_origin = paperToWorld(ends.load_coupled ? ends.target_position : out.chain.ends.col(n)) -
+                   out.rov_attitude * params_.load.attachment;
   out.vessel = wrenchAboutOrigin(paperToWorld(out.chain.base_force), out.vessel_attitude, params_.base.hang_off);
   const Eigen::Vector3d on_rov =
       params_.load.mode == LoadMode::kAttached ? Eigen::Vector3d(-out.chain.coupling_force) : out.chain.load_force;

@@ -39,6 +39,9 @@ struct SimulationSnapshot {
   // The ends as bodies (world frame, z up; body axes as the attitudes give them).
   Eigen::Quaterniond vessel_attitude = Eigen::Quaterniond::Identity();  ///< world from vessel
   Eigen::Quaterniond rov_attitude = Eigen::Quaterniond::Identity();     ///< world from ROV
+  /// The vessel's and the ROV's origins (world axes, from the base's rest position) [m]: the hang-off
+  /// point less the hang-off offset; the ROV's target (the tip, when free) less the attachment offset.
+  Eigen::Vector3d vessel_origin = Eigen::Vector3d::Zero(), rov_origin = Eigen::Vector3d::Zero();
   /// The cable's force on the vessel at the hang-off point, about the vessel's origin [N], [N m].
   BodyWrench vessel;
   /// The cable's force on the ROV at the attachment point (the coupling's reaction when attached; the

@@ -41,6 +41,11 @@ struct GuardSettings {
   double input_timeout = 1.0;         ///< stamps further than this from the clock, either way, are stale [s]
   Eigen::Vector3d base_rest = Eigen::Vector3d::Zero();  ///< the base's rest position, world frame [m]
   double plausible_radius = 100.0;  ///< a first pose must be this close to the base (rov) or its rest (base) [m]
+  /// The points of the bodies the cable's ends are fixed to, in each body's frame [m]: the ROV's
+  /// attachment (load.attachment) and the vessel's hang-off point (base.hang_off). A pose stream is
+  /// tracked at that point of its body, so that its velocity holds the body's rotation too.
+  Eigen::Vector3d rov_attachment = Eigen::Vector3d::Zero();
+  Eigen::Vector3d base_hang_off = Eigen::Vector3d::Zero();
   bool winch = false;               ///< a winch is configured: winch/speed commands are taken
   double winch_max_speed = 0.0;     ///< winch.max_speed: faster commands are rejected [m/s]
 };
@@ -60,9 +65,12 @@ class InputGuard {
   explicit InputGuard(const GuardSettings& settings);
 
   /// Judges a pose message received at `now` (the ROS clock). When accepted, `position` [m] and
-  /// `velocity` [m/s] are the stream's world position and velocity estimate.
+  /// `velocity` [m/s] are the world position and velocity estimate of the body's point (the ROV's
+  /// attachment, the vessel's hang-off point), and `attitude` the body's orientation in the world frame
+  /// (an all-zero quaternion reads as no rotation; any other is normalized).
   InputVerdict pose(Topic topic, const geometry_msgs::PoseStamped& msg, const ros::Time& now,
-                    const FrameResolver& resolve, Eigen::Vector3d& position, Eigen::Vector3d& velocity);
+                    const FrameResolver& resolve, Eigen::Vector3d& position, Eigen::Vector3d& velocity,
+                    Eigen::Quaterniond& attitude);
   /// Judges a current message; when accepted, `current` is its linear part in world axes [m/s].
   InputVerdict current(const geometry_msgs::TwistStamped& msg, const ros::Time& now, const FrameResolver& resolve,
                        Eigen::Vector3d& current);

@@ -27,7 +27,14 @@ struct CableOutputs {
   std::vector<geometry_msgs::TransformStamped> transforms;  ///< world -> paper, 3 per deployed link, the load
   visualization_msgs::MarkerArray markers;                  ///< cable, load, base_force, load_force, tension_scale
   cable_msgs::CableState state;
-  geometry_msgs::WrenchStamped wrench;
+  /// The cable's force on the ROV and its moment about the ROV's origin, in the ROV's frame (rov_wrench);
+  /// the force alone at the load, in world axes (rov_wrench_world).
+  geometry_msgs::WrenchStamped wrench, wrench_world;
+  /// The cable's force on the vessel at the hang-off point and its moment about the vessel's origin,
+  /// in the vessel's frame (base_wrench) and in world axes (base_wrench_world).
+  geometry_msgs::WrenchStamped base_wrench, base_wrench_world;
+  /// world -> vessel and world -> rov: the bodies' frames, which the wrenches above refer to.
+  std::vector<geometry_msgs::TransformStamped> body_transforms;
   diagnostic_msgs::DiagnosticArray diagnostics;
   // The shape: which slots the messages above carry, and the named entries of the drum's slots, kept
   // aside (moved, never copied: no allocation) until their links are paid out.
@@ -94,8 +101,11 @@ void fillMarkers(const OutputSource& source, double total_length, double tension
 /// cable_state: tensions (per slot), forces (world frame), energies, the winch, timing and counters.
 void fillCableState(const OutputSource& source, const NodeStatus& status, const ros::Time& stamp,
                     cable_msgs::CableState& msg);
-/// The force on the ROV (world axes): the coupling's reaction when attached, else the force on the load [N].
-void fillWrench(const OutputSource& source, LoadMode mode, const ros::Time& stamp, geometry_msgs::WrenchStamped& msg);
+/// The wrenches on the ROV and on the vessel (CableOutputs: wrench, wrench_world, base_wrench,
+/// base_wrench_world) and the two bodies' frames, from the snapshot's (SimulationSnapshot::rov, ::vessel).
+/// `base_position` is the base's rest position in the world frame [m].
+void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
+                  CableOutputs& out);
 /// /diagnostics: one status with the level rules of README.md (and the winch's values with a winch).
 void fillDiagnostics(const NodeStatus& status, const ros::Time& stamp, diagnostic_msgs::DiagnosticArray& msg);
 

@@ -22,6 +22,8 @@ struct CableFrameNames {
   std::string afterAzimuth(int k) const { return prefix + "link_" + std::to_string(k) + "_azimuth"; }
   std::string afterElevation(int k) const { return prefix + "link_" + std::to_string(k) + "_elevation"; }
   std::string load() const { return prefix + "cable_load"; }
+  std::string vessel() const { return prefix + "vessel"; }  ///< at the vessel's origin, its axes
+  std::string rov() const { return prefix + "rov"; }        ///< at the ROV's origin, its axes
   std::string joint(int index) const { return prefix + coordinateName(index); }  ///< index 0..3n-1
 };
 
