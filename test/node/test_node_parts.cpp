@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "cable_dynamics/params/config_loader.h"
@@ -57,6 +58,49 @@ class GuardTest : public ::testing::Test {
   Eigen::Vector3d position, velocity;
   Eigen::Quaterniond attitude;
 };
+
+TEST(GuardBodies, PosesAreTrackedAtTheBodysPointWithTheAttitude) {
+  GuardSettings settings;
+  settings.plausible_radius = 50.0;
+  settings.rov_attachment = Eigen::Vector3d(-1.0, 0.0, 0.5);  // aft and above the ROV's centre
+  InputGuard guard(settings);
+  const FrameResolver world = [](const std::string&, Eigen::Isometry3d& t) {
+    t.setIdentity();
+    return true;
+  };
+  Eigen::Vector3d position, velocity;
+  Eigen::Quaterniond attitude;
+  // Yawed 90 degrees: the attachment 1 m aft lies 1 m along -y of the world.
+  auto p = pose(0, 0, -10, 100.0);
+  const Eigen::Quaterniond yaw(Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitZ()));
+  p.pose.orientation.w = 2.0 * yaw.w();  // not normalized: normalized by the guard
+  p.pose.orientation.z = 2.0 * yaw.z();
+  ASSERT_EQ(guard.pose(InputGuard::kRovPose, p, ros::Time(100.0), world, position, velocity, attitude),
+            InputVerdict::kAccepted);
+  EXPECT_LT((position - Eigen::Vector3d(0.0, -1.0, -9.5)).norm(), 1e-12);
+  EXPECT_LT(attitude.angularDistance(yaw), 1e-12);
+  // Turning in place (the centre still): the attachment point moves on its circle, and its velocity
+  // estimate shows it.
+  auto q = pose(0, 0, -10, 100.1);
+  q.pose.orientation.w = 1.0;  // back to no yaw: the point moves from (0, -1) to (-1, 0)
+  ASSERT_EQ(guard.pose(InputGuard::kRovPose, q, ros::Time(100.1), world, position, velocity, attitude),
+            InputVerdict::kAccepted);
+  EXPECT_LT((position - Eigen::Vector3d(-1.0, 0.0, -9.5)).norm(), 1e-12);
+  EXPECT_GT(velocity.norm(), 1.0);
+  // An all-zero quaternion (an unset orientation) reads as no rotation; huge finite entries normalize.
+  auto zero = pose(0, 0, -10, 100.2);
+  zero.pose.orientation.w = 0.0;
+  ASSERT_EQ(guard.pose(InputGuard::kRovPose, zero, ros::Time(100.2), world, position, velocity, attitude),
+            InputVerdict::kAccepted);
+  EXPECT_LT(attitude.angularDistance(Eigen::Quaterniond::Identity()), 1e-12);
+  auto huge = pose(0, 0, -10, 100.3);
+  huge.pose.orientation.w = 1e300;
+  huge.pose.orientation.x = 1e300;
+  ASSERT_EQ(guard.pose(InputGuard::kRovPose, huge, ros::Time(100.3), world, position, velocity, attitude),
+            InputVerdict::kAccepted);
+  EXPECT_NEAR(attitude.norm(), 1.0, 1e-12);
+  EXPECT_TRUE(position.allFinite());
+}
 
 TEST_F(GuardTest, NonFiniteAndHugeValuesAreRejectedFirst) {
   EXPECT_EQ(rov(pose(kNan, 0, 0, 100.0), 100.0), InputVerdict::kNonFinite);

@@ -88,10 +88,11 @@ InputVerdict InputGuard::pose(Topic topic, const geometry_msgs::PoseStamped& msg
   if (!isAccepted(frame)) return settle(topic, frame, stamp, now);
   const geometry_msgs::Quaternion& o = msg.pose.orientation;
   Eigen::Quaterniond in_frame(o.w, o.x, o.y, o.z);
-  if (in_frame.norm() < 1e-9) {
+  const double norm = in_frame.coeffs().stableNorm();  // no overflow for huge (finite) entries
+  if (!(norm > 1e-9)) {
     in_frame = Eigen::Quaterniond::Identity();  // an unset orientation: no rotation
   } else {
-    in_frame.normalize();
+    in_frame.coeffs() /= norm;
   }
   const Eigen::Vector3d& body_point = topic == kRovPose ? settings_.rov_attachment : settings_.base_hang_off;
   const Eigen::Vector3d world = world_from_frame * (raw + in_frame * body_point);
