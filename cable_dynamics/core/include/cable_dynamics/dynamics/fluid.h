@@ -48,7 +48,7 @@ Eigen::Vector3d morisonDragPerLength(const Eigen::Vector3d& axis, const Eigen::V
 /// the velocity x' = v + s u', integrated over the length l. With x'' = a + s u'' and P x' = P v + s u'
 /// (u' is normal to u) it is -m_a' [l a.Pv + l^2/2 (a.u' + u''.Pv) + l^3/3 u''.u'].
 /// added_per_length m_a' [kg/m], l [m], unit axis u, axis_rate u' [1/s], velocity v [m/s].
-inline void addedMassPowerWeights(double added_per_length, double l, const Vec3& u, const Vec3& axis_rate,
+EIGEN_ALWAYS_INLINE void addedMassPowerWeights(double added_per_length, double l, const Vec3& u, const Vec3& axis_rate,
                                   const Vec3& velocity, Vec3& base_weight, Vec3& axis_weight) {
   const Vec3 normal_velocity = velocity - dot(u, velocity) * u;
   base_weight = -added_per_length * (l * normal_velocity + (0.5 * l * l) * axis_rate);
@@ -71,7 +71,7 @@ inline Eigen::Vector3d pointDrag(double density, double drag_area, const Eigen::
 /// addedMassPowerWeights() for lane i of `c`, with its attachments' isotropic added mass: a point at s_p
 /// moves at v + s_p u' and accelerates at a + s_p u'', so the force -m_pa (a + s_p u'') has the power
 /// -(sum m_pa (v + s_p u')).a - (sum m_pa s_p (v + s_p u')).u''.
-inline void linkAddedMassPowerWeights(const LinkConstants& c, int i, const Vec3& u, const Vec3& axis_rate,
+EIGEN_ALWAYS_INLINE void linkAddedMassPowerWeights(const LinkConstants& c, int i, const Vec3& u, const Vec3& axis_rate,
                                       const Vec3& velocity, Vec3& base_weight, Vec3& axis_weight) {
   addedMassPowerWeights(c.added[i], c.length[i], u, axis_rate, velocity, base_weight, axis_weight);
   base_weight = base_weight - (c.point_added0[i] * velocity + c.point_added1[i] * axis_rate);
