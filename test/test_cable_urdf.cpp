@@ -37,3 +37,29 @@ TEST(CableUrdf, ParsesBackWithEveryLinkJointAndInertia) {
   // Joint k+1 sits one link length beyond joint k.
   EXPECT_NEAR(model->getJoint("umbilical/joint_2_azimuth")->parent_to_joint_origin_transform.position.z, 2.0, 1e-12);
 }
+
+// Sections and an attachment: each link's radius is its section's, and a point mass on a link joins its
+// inertial (total mass, combined centre, transverse inertia about that centre: the parallel-axis sums
+// written out here).
+TEST(CableUrdf, SectionsAndAttachmentsInTheInertials) {
+  const CableParams params = loadConfigString(
+      "cable: {links: 4, length: 8.0, diameter: 0.03, mass_per_length: 0.5,\n"
+      "        sections: [{length: 4.0, diameter: 0.06, mass_per_length: 2.0}, {}]}\n"
+      "attachments: [{arc_length: 5.5, mass: 3.0}]\n");
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(cableUrdf(deriveLinkProperties(params), CableFrameNames()));
+  ASSERT_TRUE(model);
+  const auto radius = [&](int k) {
+    return std::dynamic_pointer_cast<urdf::Cylinder>(model->getLink("link_" + std::to_string(k))->visual->geometry)->radius;
+  };
+  EXPECT_NEAR(radius(1), 0.03, 1e-12);
+  EXPECT_NEAR(radius(3), 0.015, 1e-12);
+  // Link 3 (4..6 m): 1 kg of cable centred at 1 m, 3 kg at 1.5 m from its base end.
+  const urdf::InertialSharedPtr in = model->getLink("link_3")->inertial;
+  const double m = 4.0, centre = (1.0 * 1.0 + 3.0 * 1.5) / m;
+  const double own = 1.0 * (4.0 / 12.0 + 0.015 * 0.015 / 4.0);
+  const double across = own + 1.0 * (1.0 - centre) * (1.0 - centre) + 3.0 * (1.5 - centre) * (1.5 - centre);
+  EXPECT_NEAR(in->mass, m, 1e-5 * m);
+  EXPECT_NEAR(in->origin.position.z, centre, 1e-5 * centre);
+  EXPECT_NEAR(in->ixx, across, 1e-5 * across);
+  EXPECT_NEAR(model->getLink("link_1")->inertial->mass, 4.0, 1e-5);
+}

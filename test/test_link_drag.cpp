@@ -46,11 +46,13 @@ struct BlockDrag {
   double power[cd::kBlockLanes];
 };
 BlockDrag uniformDrag(const cd::LinkDrag& drag, const Eigen::Vector3d& current, const LinkMotion* motions,
-                      const double* lengths) {
+                      const double* lengths, const cd::DragCoefficients* coefficients) {
   cd::LinkConstants constants{};
   cd::LinkBlock block{};
   for (int i = 0; i < cd::kBlockLanes; ++i) {
     constants.length[i] = lengths[i];
+    constants.drag_normal[i] = coefficients[i].normal;
+    constants.drag_tangential[i] = coefficients[i].tangential;
     block.u.set(i, cd::toVec3(motions[i].axis));
     block.base_vel.set(i, cd::toVec3(motions[i].velocity));
     block.axis_rate.set(i, cd::toVec3(motions[i].axis_rate));
@@ -73,23 +75,27 @@ TEST(LinkDrag, UniformShortcutEqualsPointwiseQuadrature) {
   std::mt19937 rng(7);
   for (int points = 1; points <= 8; ++points) {
     const cd::FluidParams fluid = water(points);
-    const cd::LinkDrag drag(fluid, 0.025);
+    const cd::LinkDrag drag(fluid);
     const cd::CurrentField current(fluid);
     ASSERT_TRUE(current.uniform());
     for (int trial = 0; trial < 10; ++trial) {
       LinkMotion motions[cd::kBlockLanes];
       double lengths[cd::kBlockLanes];
+      cd::DragCoefficients coefficients[cd::kBlockLanes];
       for (int i = 0; i < cd::kBlockLanes; ++i) {
         motions[i] = randomMotion(rng);
         lengths[i] = 0.5 + 0.1 * (trial * cd::kBlockLanes + i);  // [m]
+        // Each lane its own section: diameter and coefficients differ from lane to lane.
+        coefficients[i] = cd::LinkDrag::coefficients(fluid.density, 0.01 + 0.01 * i, fluid.drag_normal * (1.0 + 0.2 * i),
+                                                     fluid.drag_tangential * (1.0 + 0.3 * i));
       }
       lengths[cd::kBlockLanes - 1] = 0.0;  // as in a padding lane: no drag at all
-      const BlockDrag fast = uniformDrag(drag, current.uniformValue(), motions, lengths);
+      const BlockDrag fast = uniformDrag(drag, current.uniformValue(), motions, lengths, coefficients);
       for (int i = 0; i < cd::kBlockLanes; ++i) {
         const LinkMotion& m = motions[i];
         const double l = lengths[i];
         Eigen::Vector3d f_slow, m_slow;
-        drag.pointwise(current, l, m.base, m.velocity, m.axis, m.axis_rate, f_slow, m_slow);
+        drag.pointwise(current, l, coefficients[i], m.base, m.velocity, m.axis, m.axis_rate, f_slow, m_slow);
         const double scale = f_slow.norm() + 1e-3;
         EXPECT_LT((fast.force[i] - f_slow).norm(), 1e-12 * scale) << "points " << points << " lane " << i;
         EXPECT_LT((fast.moment[i] - m_slow).norm(), 1e-12 * scale * (l + 1e-3)) << "points " << points << " lane " << i;
@@ -108,18 +114,20 @@ TEST(LinkDrag, GaussQuadratureMatchesFineMidpointRule) {
   // zero), so both converge; 1e-6 relative is far above either's error.
   const cd::FluidParams fluid = water(8);
   const double d = 0.025, l = 2.0;
-  const cd::LinkDrag drag(fluid, d);
+  const cd::LinkDrag drag(fluid);
   const cd::CurrentField current(fluid);
   const Eigen::Vector3d c = current.uniformValue();
   const Eigen::Vector3d axis = Eigen::Vector3d(0.3, 0.1, 0.9).normalized();
   const Eigen::Vector3d velocity(-0.4, 0.2, 0.0), axis_rate = Eigen::Vector3d(0.0, 0.5, 0.2).cross(axis);
   LinkMotion motions[cd::kBlockLanes];
   double lengths[cd::kBlockLanes];
+  cd::DragCoefficients coefficients[cd::kBlockLanes];
   for (int i = 0; i < cd::kBlockLanes; ++i) {
     motions[i] = {Eigen::Vector3d(0.0, 0.0, 5.0), velocity, axis, axis_rate};
     lengths[i] = l;
+    coefficients[i] = cd::LinkDrag::coefficients(fluid.density, d, fluid.drag_normal, fluid.drag_tangential);
   }
-  const BlockDrag block = uniformDrag(drag, c, motions, lengths);
+  const BlockDrag block = uniformDrag(drag, c, motions, lengths, coefficients);
   const Eigen::Vector3d force = block.force[0], moment = block.moment[0];
   Eigen::Vector3d f_ref = Eigen::Vector3d::Zero(), m_ref = Eigen::Vector3d::Zero();
   const int cells = 20000;

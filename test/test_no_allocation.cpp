@@ -53,6 +53,22 @@ TEST(NoAllocation, SemiImplicitStep) {
   expectNoAllocation({"simulation.integrator=semi_implicit", "simulation.dt=0.01"});
 }
 
+TEST(NoAllocation, SectionsAndAttachments) {
+  // Per-link section properties, and attachments with drag (their own loop in the drag pass), in both
+  // formulations and in a depth profile (the statics' and the dynamics' point-by-point path).
+  const std::vector<std::string> sections = {
+      "cable.sections=[{length: 6.0, diameter: 0.06, mass_per_length: 3.0, drag_normal: 1.5}, {added_mass: 0.5}]",
+      "attachments=[{arc_length: 7.0, mass: 2.0, volume: 0.01, drag_area: 0.2, added_mass: 1.0}, "
+      "{arc_length: 12.5, mass: 8.0, volume: 0.001, drag_area: 0.05}]"};
+  for (const char* extra : {"simulation.formulation=recursive", "simulation.formulation=paper",
+                            "fluid.current_profile=[[0, 1.0, 0.2, 0.0], [20, 0.3, 0.0, 0.0]]"}) {
+    std::vector<std::string> o = sections;
+    o.push_back(extra);
+    if (std::string(extra).find("profile") != std::string::npos) o.push_back("fluid.current=[0, 0, 0]");
+    expectNoAllocation(o);
+  }
+}
+
 TEST(NoAllocation, WinchPayingOutAndHaulingIn) {
   // Links added and removed at the winch, in the steps where that happens: everything is sized for
   // the longest deployment at start.

@@ -31,6 +31,18 @@ nlohmann::json modelReport(const CableParams& params, const Eigen::VectorXd& q, 
   j["inertia_transverse"] = toJson(props.inertia_transverse);
   j["inertia_polar"] = toJson(props.inertia_polar);
   j["submerged_mass"] = toJson(props.submerged_mass);
+  j["radius"] = toJson(props.radius);
+  j["added_mass_per_length"] = toJson(props.added_mass_per_length);
+  j["drag_normal"] = toJson(props.drag_normal);
+  j["drag_tangential"] = toJson(props.drag_tangential);
+  j["section"] = toJson(Eigen::VectorXd(props.section.cast<double>()));
+  // Point attachments on their links; the paper model's M, h, G below are the cable's alone (without them).
+  nlohmann::json attachments = nlohmann::json::array();
+  for (const LinkAttachment& a : props.attachments) {
+    attachments.push_back({{"link", a.link + 1}, {"offset", a.offset}, {"mass", a.mass}, {"submerged_mass", a.submerged_mass},
+                           {"added_mass", a.added_mass}, {"drag_area", a.drag_area}});
+  }
+  j["attachments"] = attachments;
   j["load_mass"] = props.load_mass;
   j["load_submerged_mass"] = props.load_submerged_mass;
   j["gravity"] = props.gravity;

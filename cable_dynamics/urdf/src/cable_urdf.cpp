@@ -38,16 +38,27 @@ std::string cableUrdf(const LinkProperties& p, const CableFrameNames& names) {
   model.root_link_ = root;
   std::string parent = root->name;
   double offset = 0.0;  // the previous link's length: joint k sits at its far end
-  const double radius = p.radius;
+  // Per link: the cable's own mass (its section's) and the point attachments it holds, combined into one
+  // body: the total mass, its centre and the inertia about it (points add m (s - c)^2 across, none along).
+  std::vector<double> point_mass(p.n, 0.0), point_first(p.n, 0.0), point_second(p.n, 0.0);
+  for (const LinkAttachment& a : p.attachments) {
+    point_mass[a.link] += a.mass;
+    point_first[a.link] += a.mass * a.offset;
+    point_second[a.link] += a.mass * a.offset * a.offset;
+  }
   for (int k = 1; k <= p.n; ++k) {
-    const double l = p.length(k - 1), m = p.mass(k - 1);
+    const double l = p.length(k - 1), own = p.mass(k - 1), radius = p.radius(k - 1);
+    const double m = own + point_mass[k - 1];
+    const double centre = m > 0.0 ? (0.5 * l * own + point_first[k - 1]) / m : 0.5 * l;
+    // About the base end: I_T + own (l/2)^2 + sum m s^2; shifted to the combined centre.
+    const double across = p.inertia_transverse(k - 1) + own * 0.25 * l * l + point_second[k - 1] - m * centre * centre;
     auto z_frame = makeLink(names.afterAzimuth(k)), x_frame = makeLink(names.afterElevation(k));
     auto link = makeLink(names.link(k));
     // Inertia about the CoM, in the link frame (z along the link).
     link->inertial = std::make_shared<urdf::Inertial>();
     link->inertial->mass = m;
-    link->inertial->origin.position = urdf::Vector3(0.0, 0.0, 0.5 * l);
-    link->inertial->ixx = link->inertial->iyy = p.inertia_transverse(k - 1);
+    link->inertial->origin.position = urdf::Vector3(0.0, 0.0, centre);
+    link->inertial->ixx = link->inertial->iyy = across;
     link->inertial->izz = p.inertia_polar(k - 1);
     link->inertial->ixy = link->inertial->ixz = link->inertial->iyz = 0.0;
     auto cylinder = std::make_shared<urdf::Cylinder>();

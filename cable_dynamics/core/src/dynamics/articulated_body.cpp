@@ -48,20 +48,21 @@ EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainModel& model, LinkBlocks& link
     for (int i = 0; i < kBlockLanes; ++i) {
       const Vec3 u = block.u[i], beta = block.beta[i], omega = block.omega[i], torque = block.torque[i];
       const Vec3 axis_rate = block.axis_rate[i], known = block.known_acc[i];
-      const double l = c.length[i], across = c.across[i], added = c.added[i];
+      const double l = c.length[i], added = c.added[i];
       Vec3 e1, e2;
       normalPlaneBasis(u, e1, e2);
       block.e1.set(i, e1);
       block.e2.set(i, e2);
-      // l A = l m' I + l m_a' (I - u u^T).
-      const double lm = l * across, la = l * added;
+      // l A = l m' I + l m_a' (I - u u^T), and the attachments' (m_p + m_pa) I.
+      const double lm = c.translational[i], la = l * added;
       block.own_mass.set(i, {lm - la * u.x * u.x, -la * u.x * u.y, -la * u.x * u.z, lm - la * u.y * u.y,
                              -la * u.y * u.z, lm - la * u.z * u.z});
       // The link's points at s accelerate by a0 + s beta at y = 0: the force integral A (l a0 + l^2/2 beta),
-      // its first moment A (l^2/2 a0 + l^3/3 beta), of which only u x (...) counts, where A acts as m' + m_a'.
+      // its first moment A (l^2/2 a0 + l^3/3 beta), of which only u x (...) counts, where A acts as m' + m_a';
+      // the attachments add their isotropic mass moments to each.
       const Vec3 mean = l * known + (0.5 * l * l) * beta;
-      block.own_force.set(i, across * mean - (added * dot(u, mean)) * u - block.force[i]);
-      block.own_moment.set(i, across * ((0.5 * l * l) * known) + c.third_moment[i] * beta - block.moment[i]);
+      block.own_force.set(i, lm * known + c.half_moment[i] * beta - (added * dot(u, mean)) * u - block.force[i]);
+      block.own_moment.set(i, c.half_moment[i] * known + c.third_moment[i] * beta - block.moment[i]);
       // omega x (I_rot omega) - tau, with I_rot = I_thick (I - u u^T) + I_P u u^T.
       const double gyroscopic = c.polar[i] - c.thick_transverse[i];
       const Vec3 bias_torque = (gyroscopic * dot(u, omega)) * axis_rate - torque;
@@ -173,8 +174,7 @@ EIGEN_ALWAYS_INLINE double accelerationPass(const ChainModel& model, LinkBlocks&
       // u'' = omega' x u + beta, with omega' x u = C y = y2 e1 - y1 e2.
       const Vec3 axis_acc = y2 * e1 - y1 * e2 + block.beta[i];
       Vec3 added_base, added_axis;
-      addedMassPowerWeights(c.added[i], c.length[i], u, block.axis_rate[i], block.base_vel[i], added_base,
-                            added_axis);
+      linkAddedMassPowerWeights(c, i, u, block.axis_rate[i], block.base_vel[i], added_base, added_axis);
       power[i] += dot(added_base, block.known_acc[i] + delta) + dot(added_axis, axis_acc);
     }
   }
@@ -194,7 +194,11 @@ EIGEN_ALWAYS_INLINE void jointForcesPass(const ChainModel& model, ChainData& dat
     const int i = LinkBlocks::lane(k);
     data.joint_force.col(k) = toEigen(block.mass[i] * block.delta_acc[i] + block.bias[i]);
   }
-  data.load_force = model.load().inertia * (data.tip_known_acc + toEigen(tip_delta)) - data.load_external;
+  const Eigen::Vector3d tip_acc = data.tip_known_acc + toEigen(tip_delta);
+  data.load_force = model.load().inertia * tip_acc - data.load_external;
+  // The load's added-mass force -m_a a_tip: its power goes with the links' (the kinetic energy is the
+  // structure's alone).
+  data.added_mass_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);
 }
 
 }  // namespace

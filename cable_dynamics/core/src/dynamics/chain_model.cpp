@@ -9,9 +9,26 @@ ChainModel::ChainModel(const CableParams& params)
       properties_(nominal_),
       formulation_(params.simulation.formulation),
       fluid_density_(params.fluid.density),
-      drag_(params.fluid, params.diameter),
+      drag_(params.fluid),
+      points_(params.links),
+      attachment_begin_(params.links + 1, 0),
       lanes_((params.links + kBlockLanes - 1) / kBlockLanes) {
   const LinkProperties& p = nominal_;
+  for (const LinkAttachment& a : p.attachments) {
+    PointSums& sums = points_[a.link];
+    const double s = a.offset;
+    sums.mass0 += a.mass;
+    sums.mass1 += a.mass * s;
+    sums.mass2 += a.mass * s * s;
+    sums.added0 += a.added_mass;
+    sums.added1 += a.added_mass * s;
+    sums.added2 += a.added_mass * s * s;
+    sums.sub0 += a.submerged_mass;
+    sums.sub1 += a.submerged_mass * s;
+    ++attachment_begin_[a.link + 1];
+    attachment_drag_ = attachment_drag_ || (a.drag_area > 0.0 && params.fluid.density > 0.0);
+  }
+  for (int k = 0; k < n_; ++k) attachment_begin_[k + 1] += attachment_begin_[k];
   has_springs_ = p.stiffness_elevation.any() || p.stiffness_azimuth.any() || p.stiffness_torsion.any() ||
                  p.damping_elevation.any() || p.damping_azimuth.any() || p.damping_torsion.any();
   load_.mass = p.load_mass;
@@ -27,10 +44,11 @@ ChainModel::ChainModel(const CableParams& params)
 
 void ChainModel::setLinkLength(int k, double l) {
   LinkProperties& p = properties_;
-  // Per unit length, from the configured slot (a cable's mass per length does not change with its length).
+  // Per unit length, from the configured slot and its section (a cable's mass per length does not
+  // change with its length).
   const double per_length = nominal_.mass(k) / nominal_.length(k);
   const double submerged_per_length = nominal_.submerged_mass(k) / nominal_.length(k);
-  const double radius = p.radius, m = per_length * l;
+  const double radius = p.radius(k), m = per_length * l;
   p.length(k) = l;
   p.mass(k) = m;
   p.submerged_mass(k) = submerged_per_length * l;
@@ -40,19 +58,34 @@ void ChainModel::setLinkLength(int k, double l) {
   LinkConstants& c = lanes_[k / kBlockLanes];
   const int i = k % kBlockLanes;
   const bool deployed = l > 0.0;
-  const double added = deployed ? p.added_mass_per_length : 0.0;
+  // A slot on the drum carries nothing (attachments are refused with a winch; config_loader.cpp).
+  const PointSums points = deployed ? points_[k] : PointSums{};
+  const double added = deployed ? p.added_mass_per_length(k) : 0.0;
+  const double g = p.gravity, rho = fluid_density_;
   c.length[i] = l;
   c.mass_per_length[i] = deployed ? per_length : 0.0;
   c.added[i] = added;
   c.across[i] = c.mass_per_length[i] + added;
-  c.weight[i] = p.gravity * p.submerged_mass(k);
-  c.half_moment[i] = 0.5 * l * l * c.across[i];
-  c.third_moment[i] = l * l * l / 3.0 * c.across[i];
+  c.weight[i] = g * (p.submerged_mass(k) + points.sub0);
+  c.weight_moment[i] = g * (0.5 * l * p.submerged_mass(k) + points.sub1);
+  c.translational[i] = l * c.across[i] + points.mass0 + points.added0;
+  c.half_moment[i] = 0.5 * l * l * c.across[i] + points.mass1 + points.added1;
+  c.third_moment[i] = l * l * l / 3.0 * c.across[i] + points.mass2 + points.added2;
   // The translation integral over the link already holds m l^2/12; the rest of I_T is the thickness.
   c.thick_transverse[i] = m * (radius * radius / 4.0);
   c.own_transverse[i] = c.third_moment[i] + c.thick_transverse[i];
   c.polar[i] = p.inertia_polar(k);
   c.inverse_polar[i] = deployed ? 1.0 / p.inertia_polar(k) : 0.0;
+  c.structure0[i] = m + points.mass0;
+  c.structure1[i] = 0.5 * l * m + points.mass1;
+  c.structure2[i] = l * l / 3.0 * m + points.mass2;
+  c.point_added0[i] = points.added0;
+  c.point_added1[i] = points.added1;
+  c.point_added2[i] = points.added2;
+  const DragCoefficients drag =
+      deployed ? LinkDrag::coefficients(rho, 2.0 * radius, p.drag_normal(k), p.drag_tangential(k)) : DragCoefficients{};
+  c.drag_normal[i] = drag.normal;
+  c.drag_tangential[i] = drag.tangential;
 }
 
 void ChainModel::deploy(int first) {

@@ -13,13 +13,15 @@ CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const Cha
     const LinkConstants& constants = model.block(b);
     const LinkBlock& block = data.links.block(b);
     for (int i = 0; i < kBlockLanes; ++i) {
-      const double l = constants.length[i], m = constants.mass_per_length[i];
+      // A point at s moves at v + s u': the mass moments (cable and attachments) about the base end
+      // give 1/2 (M0 |v|^2 + 2 M1 v.u' + M2 |u'|^2).
       const Vec3 v = block.base_vel[i], c = block.axis_rate[i], omega = block.omega[i], axis = block.u[i];
       const double spin = dot(omega, axis);
-      kinetic_lanes[i] += 0.5 * m * (l * dot(v, v) + l * l * dot(v, c) + (l * l * l / 3.0) * dot(c, c)) +
+      kinetic_lanes[i] += 0.5 * (constants.structure0[i] * dot(v, v) + 2.0 * constants.structure1[i] * dot(v, c) +
+                                 constants.structure2[i] * dot(c, c)) +
                           0.5 * constants.thick_transverse[i] * (dot(omega, omega) - spin * spin) +
                           0.5 * constants.polar[i] * spin * spin;
-      potential_lanes[i] -= constants.weight[i] * (block.base_pos.z[i] + 0.5 * l * axis.z);
+      potential_lanes[i] -= constants.weight[i] * block.base_pos.z[i] + constants.weight_moment[i] * axis.z;
     }
   }
   kinetic = 0.5 * model.load().mass * data.tip_velocity.squaredNorm();

@@ -16,11 +16,12 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
   for (int b = model.firstBlock(); b < data.links.blocks(); ++b) {
     const LinkConstants& constants = model.block(b);
     LinkBlock& block = data.links.block(b);
-    // Submerged weight, uniform along the link: total and first moment about the base end.
+    // Submerged weight, uniform along the link, and the attachments' at their points: total and first
+    // moment about the base end.
     CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
       block.force.set(i, {0.0, 0.0, constants.weight[i]});
-      block.moment.set(i, {0.0, 0.0, 0.5 * constants.length[i] * constants.weight[i]});
+      block.moment.set(i, {0.0, 0.0, constants.weight_moment[i]});
     }
     if (!in_water) continue;
     if (uniform) {
@@ -29,7 +30,8 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
       const int first = b * kBlockLanes, count = std::min(kBlockLanes, n - first);
       for (int i = 0; i < count; ++i) {
         Eigen::Vector3d fd, md;
-        model.drag().pointwise(current_field, constants.length[i], toEigen(block.base_pos[i]),
+        model.drag().pointwise(current_field, constants.length[i], {constants.drag_normal[i], constants.drag_tangential[i]},
+                               toEigen(block.base_pos[i]),
                                toEigen(block.base_vel[i]), toEigen(block.u[i]), toEigen(block.axis_rate[i]), fd, md);
         block.force.set(i, block.force[i] + toVec3(fd));
         block.moment.set(i, block.moment[i] + toVec3(md));
@@ -39,6 +41,21 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
     double power = 0.0;  // the padding lanes' drag is zero (zero length)
     for (int i = 0; i < kBlockLanes; ++i) power += block.drag_power[i];
     drag_power += power;
+  }
+  // The attachments' drag, at each one's point with that point's velocity (few: a loop of its own).
+  if (model.attachmentDrag()) {
+    for (const LinkAttachment& a : model.attachments()) {
+      if (a.drag_area <= 0.0) continue;
+      LinkBlock& block = data.links.of(a.link);
+      const int i = LinkBlocks::lane(a.link);
+      const Eigen::Vector3d u = toEigen(block.u[i]), rate = toEigen(block.axis_rate[i]);
+      const Eigen::Vector3d position = toEigen(block.base_pos[i]) + a.offset * u;
+      const Eigen::Vector3d velocity = toEigen(block.base_vel[i]) + a.offset * rate;
+      const Eigen::Vector3d drag = pointDrag(model.fluidDensity(), a.drag_area, velocity, current_field.at(position.z()));
+      block.force.set(i, block.force[i] + toVec3(drag));
+      block.moment.set(i, block.moment[i] + toVec3(a.offset * drag));
+      drag_power += drag.dot(velocity);
+    }
   }
   // The load: weight, drag, and the PD coupling to its anchor or to the ROV.
   const LoadConstants& load = model.load();

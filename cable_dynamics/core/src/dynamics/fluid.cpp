@@ -84,26 +84,19 @@ void gaussLegendreUnit(int points, double* nodes, double* weights) {
   assert(out == points);
 }
 
-LinkDrag::LinkDrag(const FluidParams& fluid, double diameter)
-    : density_(fluid.density),
-      diameter_(diameter),
-      drag_normal_(fluid.drag_normal),
-      drag_tangential_(fluid.drag_tangential),
-      normal_coefficient_(0.5 * fluid.density * diameter * fluid.drag_normal),
-      tangential_coefficient_(0.5 * fluid.density * diameter * fluid.drag_tangential * M_PI),
-      points_(fluid.drag_points) {
-  gaussLegendreUnit(points_, nodes_, weights_);
-}
+LinkDrag::LinkDrag(const FluidParams& fluid) : points_(fluid.drag_points) { gaussLegendreUnit(points_, nodes_, weights_); }
 
-void LinkDrag::pointwise(const CurrentField& current, double l, const Eigen::Vector3d& base,
-                         const Eigen::Vector3d& velocity, const Eigen::Vector3d& axis,
+void LinkDrag::pointwise(const CurrentField& current, double l, const DragCoefficients& coefficients,
+                         const Eigen::Vector3d& base, const Eigen::Vector3d& velocity, const Eigen::Vector3d& axis,
                          const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force, Eigen::Vector3d& moment) const {
   force.setZero();
   moment.setZero();
   for (int i = 0; i < points_; ++i) {
     const double s = nodes_[i] * l, w = weights_[i] * l;
-    const Eigen::Vector3d drag = morisonDragPerLength(axis, velocity + s * axis_rate, current.at(base.z() + s * axis.z()),
-                                                      density_, diameter_, drag_normal_, drag_tangential_);
+    const Eigen::Vector3d relative = current.at(base.z() + s * axis.z()) - (velocity + s * axis_rate);
+    const Eigen::Vector3d tangential = relative.dot(axis) * axis, normal = relative - tangential;
+    const Eigen::Vector3d drag =
+        coefficients.normal * normal.norm() * normal + coefficients.tangential * tangential.norm() * tangential;
     force += w * drag;
     moment += (w * s) * drag;
   }

@@ -1,6 +1,7 @@
 #include "cable_dynamics/params/cable_params.h"
 
 #include <cmath>
+#include <algorithm>
 #include <numeric>
 
 namespace cable_dynamics {
@@ -13,34 +14,114 @@ double CableParams::deployedLength() const {
   return std::accumulate(link_lengths.begin() + winch.stored_links, link_lengths.end(), 0.0);
 }
 
+static std::vector<SectionParams> effectiveSections(const CableParams& params) {
+  if (!params.sections.empty()) return params.sections;
+  SectionParams s;
+  s.length = params.deployedLength();
+  s.diameter = params.diameter;
+  s.mass_per_length = params.mass_per_length;
+  s.bending_rigidity = params.stiffness.bending_rigidity;
+  s.torsional_rigidity = params.stiffness.torsional_rigidity;
+  s.drag_normal = params.fluid.drag_normal;
+  s.drag_tangential = params.fluid.drag_tangential;
+  s.added_mass = params.fluid.added_mass;
+  return {s};
+}
+
 LinkProperties deriveLinkProperties(const CableParams& params) {
-  const int n = params.links;
-  const double radius = 0.5 * params.diameter;                  // [m]
-  const double section_area = M_PI * radius * radius;           // [m^2]
+  const int n = params.links, stored = params.winch.stored_links;
+  const double rho = params.fluid.density;
+  const std::vector<SectionParams> sections = effectiveSections(params);
   LinkProperties p;
   p.n = n;
-  p.radius = radius;
   p.length = Eigen::Map<const Eigen::VectorXd>(params.link_lengths.data(), n);
-  p.mass = params.mass_per_length * p.length;
-  // A link is a solid cylinder of the cable's outer diameter: the transverse inertia is about the CoM.
-  p.inertia_transverse = p.mass.array() * (p.length.array().square() / 12.0 + radius * radius / 4.0);
-  p.inertia_polar = p.mass * (radius * radius / 2.0);
-  p.submerged_mass = p.mass - params.fluid.density * section_area * p.length;
-  p.added_mass_per_length = params.fluid.added_mass * params.fluid.density * section_area;
+  // Each link takes the section its centre lies in, by arc length from the base of the configured
+  // cable; the drum's slots (a winch) take the base section's.
+  p.section.setZero(n);
+  {
+    double start = 0.0;  // arc length of the configured cable at the slot's base end [m]
+    std::size_t s = 0;
+    double section_end = sections[0].length;
+    for (int k = stored; k < n; ++k) {
+      const double centre = start + 0.5 * p.length(k);
+      while (s + 1 < sections.size() && centre >= section_end) section_end += sections[++s].length;
+      p.section(k) = static_cast<int>(s);
+      start += p.length(k);
+    }
+  }
+  p.radius.resize(n);
+  p.mass.resize(n);
+  p.submerged_mass.resize(n);
+  p.added_mass_per_length.resize(n);
+  p.drag_normal.resize(n);
+  p.drag_tangential.resize(n);
+  Eigen::VectorXd bending(n), torsional(n);
+  for (int k = 0; k < n; ++k) {
+    const SectionParams& sec = sections[p.section(k)];
+    const double radius = 0.5 * sec.diameter, area = M_PI * radius * radius;  // [m], [m^2]
+    p.radius(k) = radius;
+    p.mass(k) = sec.mass_per_length * p.length(k);
+    p.submerged_mass(k) = p.mass(k) - rho * area * p.length(k);
+    p.added_mass_per_length(k) = sec.added_mass * rho * area;
+    p.drag_normal(k) = sec.drag_normal;
+    p.drag_tangential(k) = sec.drag_tangential;
+    bending(k) = sec.bending_rigidity;
+    torsional(k) = sec.torsional_rigidity;
+  }
+  // A link is a solid cylinder of its section's outer diameter: the transverse inertia is about the CoM.
+  const Eigen::ArrayXd r2 = p.radius.array().square();
+  p.inertia_transverse = p.mass.array() * (p.length.array().square() / 12.0 + r2 / 4.0);
+  p.inertia_polar = p.mass.array() * (r2 / 2.0);
+
+  // Attachments: on the slot that holds the arc length (a point on a link end belongs to the link
+  // outboard of it; the tip to the last link), at that distance from its base end.
+  std::vector<AttachmentParams> attachments = params.attachments;
+  std::stable_sort(attachments.begin(), attachments.end(),
+                   [](const AttachmentParams& a, const AttachmentParams& b) { return a.arc_length < b.arc_length; });
+  {
+    int k = stored;
+    double start = 0.0;
+    for (const AttachmentParams& a : attachments) {
+      while (k + 1 < n && a.arc_length >= start + p.length(k)) start += p.length(k++);
+      LinkAttachment la;
+      la.link = k;
+      la.offset = std::min(std::max(a.arc_length - start, 0.0), p.length(k));
+      la.mass = a.mass;
+      la.submerged_mass = a.mass - rho * a.volume;
+      la.added_mass = a.added_mass;
+      la.drag_area = a.drag_area;
+      p.attachments.push_back(la);
+    }
+  }
 
   // Rigidities, when given, give per-joint springs k = EI / s_k, s_k the arc length the joint's bend is
   // spread over: between the centres of the two links it joins, (l_{k-1} + l_k)/2, and for joint 1 from
   // the clamp to link 1's centre, l_1/2. (A whole l_1 there makes the clamp first-order accurate: a
   // cantilever's tip deflection off by about 2/n; docs/MODEL.md section 5.)
   const StiffnessParams& k = params.stiffness;
-  Eigen::VectorXd inv_length(n);
-  for (int j = 0; j < n; ++j) inv_length(j) = 2.0 / (p.length(j) + (j > 0 ? p.length(j - 1) : 0.0));
-  const auto springs = [&](double per_joint, double rigidity) -> Eigen::VectorXd {
-    return rigidity > 0.0 ? Eigen::VectorXd(rigidity * inv_length) : Eigen::VectorXd::Constant(n, per_joint);
+  // Per link the rigidity of its section; joint j's bend is spread over half of each link it joins,
+  // which with different rigidities are springs in series: 1/k = (l_{j-1}/2)/EI_{j-1} + (l_j/2)/EI_j
+  // (exact for a piecewise-uniform beam under a uniform moment; 2 EI/(l_{j-1} + l_j) when they agree).
+  const auto springs = [&](double per_joint, const Eigen::VectorXd& rigidity) -> Eigen::VectorXd {
+    if (!(rigidity.array() > 0.0).any()) return Eigen::VectorXd::Constant(n, per_joint);
+    Eigen::VectorXd out(n);
+    for (int j = 0; j < n; ++j) {
+      const double own = rigidity(j);
+      if (j == 0) {
+        out(j) = own * (2.0 / p.length(0));
+      } else if (rigidity(j - 1) == own) {
+        out(j) = own * (2.0 / (p.length(j) + p.length(j - 1)));
+      } else if (own > 0.0 && rigidity(j - 1) > 0.0) {
+        out(j) = 1.0 / (0.5 * p.length(j - 1) / rigidity(j - 1) + 0.5 * p.length(j) / own);
+      } else {
+        out(j) = 0.0;
+      }
+    }
+    return out;
   };
-  p.stiffness_elevation = springs(k.elevation, k.bending_rigidity);
-  p.stiffness_azimuth = springs(k.azimuth, k.bending_rigidity);
-  p.stiffness_torsion = springs(k.torsion, k.torsional_rigidity);
+  p.stiffness_elevation = springs(k.elevation, bending);
+  p.stiffness_azimuth = springs(k.azimuth, bending);
+  p.stiffness_torsion = springs(k.torsion, torsional);
   p.damping_elevation = Eigen::VectorXd::Constant(n, params.damping.elevation);
   p.damping_azimuth = Eigen::VectorXd::Constant(n, params.damping.azimuth);
   p.damping_torsion = Eigen::VectorXd::Constant(n, params.damping.torsion);

@@ -15,7 +15,14 @@ constexpr int kMaxLinks = 10000;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-void parseCable(Section cable, CableParams& p) {
+/// What parseCable leaves for later: the sections' defaults need the fluid's coefficients.
+struct CableRest {
+  bool has_sections = false;
+  YAML::Node sections;            ///< cable.sections when has_sections
+  double material_density = 0.0;  ///< [kg/m^3] when the cable is given by material_density
+};
+
+void parseCable(Section cable, CableParams& p, CableRest& rest) {
   p.links = cable.integer("links", 1, 1, kMaxLinks, true);
   if (cable.has("link_lengths")) {
     // The list overrides `length`: the total length is then the sum of the list.
@@ -37,6 +44,11 @@ void parseCable(Section cable, CableParams& p) {
   } else {
     const double rho = cable.number("material_density", 0.0, 0.0, 1e5, true, "kg/m^3");
     p.mass_per_length = rho * M_PI * 0.25 * p.diameter * p.diameter;
+    rest.material_density = rho;
+  }
+  if (cable.has("sections")) {
+    rest.has_sections = true;
+    rest.sections = cable.raw("sections");
   }
 
   Section stiffness = cable.sub("stiffness");
@@ -139,9 +151,94 @@ void parseFluid(Section fluid, CableParams& p) {
   fluid.rejectUnknownKeys();
 }
 
+/// `cable.sections` (after the fluid: a key left out takes the cable's or the fluid's value).
+void parseSections(const YAML::Node& rows, const CableRest& rest, CableParams& p) {
+  const std::string key = "cable.sections";
+  if (!rows.IsSequence() || rows.size() < 1) {
+    throw ConfigError(key, describeNode(rows), "a list of {length: m, diameter: m, mass_per_length: kg/m, ...}");
+  }
+  const double total = p.totalLength();  // before a winch adds its drum's slots
+  const StiffnessParams& k = p.stiffness;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    Section row(rows[i], key + "[" + std::to_string(i) + "]");
+    const bool last = i + 1 == rows.size();
+    SectionParams s;
+    // Every length but the last is required; the last, when left out, runs to the cable's tip.
+    s.length = row.number("length", 0.0, 0.0, 1e5, true, "m", !last);
+    s.diameter = row.number("diameter", p.diameter, 0.0, 10.0, true, "m");
+    const bool linear = row.has("mass_per_length"), material = row.has("material_density");
+    if (linear && material) {
+      throw ConfigError(row.path() + ".mass_per_length", "given with material_density",
+                        "at most one of mass_per_length [kg/m] or material_density [kg/m^3]");
+    }
+    if (linear) {
+      s.mass_per_length = row.number("mass_per_length", 0.0, 0.0, 1e5, true, "kg/m");
+    } else {
+      // Left out: the cable's material density over this diameter, or the cable's mass per length.
+      const double rho = material ? row.number("material_density", 0.0, 0.0, 1e5, true, "kg/m^3") : rest.material_density;
+      s.mass_per_length = rho > 0.0 ? rho * M_PI * 0.25 * s.diameter * s.diameter : p.mass_per_length;
+    }
+    s.bending_rigidity = row.number("bending_rigidity", k.bending_rigidity, 0.0, kInf, false, "N m^2");
+    s.torsional_rigidity = row.number("torsional_rigidity", k.torsional_rigidity, 0.0, kInf, false, "N m^2");
+    if (row.has("bending_rigidity") && s.bending_rigidity > 0.0 && (k.elevation > 0.0 || k.azimuth > 0.0)) {
+      throw ConfigError(row.path() + ".bending_rigidity", std::to_string(s.bending_rigidity),
+                        "0 when cable.stiffness.elevation or azimuth is given (one or the other)");
+    }
+    if (row.has("torsional_rigidity") && s.torsional_rigidity > 0.0 && k.torsion > 0.0) {
+      throw ConfigError(row.path() + ".torsional_rigidity", std::to_string(s.torsional_rigidity),
+                        "0 when cable.stiffness.torsion is given (one or the other)");
+    }
+    s.drag_normal = row.number("drag_normal", p.fluid.drag_normal, 0.0, 100.0, false, "");
+    s.drag_tangential = row.number("drag_tangential", p.fluid.drag_tangential, 0.0, 100.0, false, "");
+    s.added_mass = row.number("added_mass", p.fluid.added_mass, 0.0, 100.0, false, "");
+    row.rejectUnknownKeys();
+    if (last && !row.has("length")) {
+      if (!(total - sum > 1e-9 * total)) {
+        throw ConfigError(row.path() + ".length", "(missing)",
+                          "the rest of the cable, but the sections before it already take " + std::to_string(sum) +
+                              " m of " + std::to_string(total) + " m");
+      }
+      s.length = total - sum;
+    }
+    sum += s.length;
+    if (sum > total * (1.0 + 1e-9) || (last && std::abs(sum - total) > 1e-9 * total)) {
+      throw ConfigError(row.path() + ".length", std::to_string(s.length),
+                        "section lengths adding up to the cable's length " + std::to_string(total) + " m (they add up to " +
+                            std::to_string(sum) + " m" + (last ? "" : " before the last") + ")");
+    }
+    p.sections.push_back(s);
+  }
+}
+
+/// `attachments:` point loads by arc length from the base of the configured cable.
+void parseAttachments(const YAML::Node& rows, CableParams& p) {
+  const std::string key = "attachments";
+  if (!rows.IsSequence()) {
+    throw ConfigError(key, describeNode(rows), "a list of {arc_length: m, mass: kg, volume: m^3, drag_area: m^2, added_mass: kg}");
+  }
+  const double total = p.totalLength();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    Section row(rows[i], key + "[" + std::to_string(i) + "]");
+    AttachmentParams a;
+    a.arc_length = row.number("arc_length", 0.0, 0.0, total, false, "m", true);
+    a.mass = row.number("mass", 0.0, 0.0, 1e7, false, "kg");
+    a.volume = row.number("volume", 0.0, 0.0, 1e4, false, "m^3");
+    a.drag_area = row.number("drag_area", 0.0, 0.0, 1e4, false, "m^2");
+    a.added_mass = row.number("added_mass", 0.0, 0.0, 1e7, false, "kg");
+    row.rejectUnknownKeys();
+    p.attachments.push_back(a);
+  }
+}
+
 /// `winch:` (after everything else: it adds the drum's slots in front of the configured cable).
 void parseWinch(Section winch, CableParams& p) {
   WinchParams& w = p.winch;
+  if (!p.attachments.empty()) {
+    // The winch's link changes length and the links move along their slots as it pays out: an
+    // attachment would have to ride through the winch (not modelled).
+    throw ConfigError("attachments", std::to_string(p.attachments.size()) + " given", "none with a winch (not modelled yet)");
+  }
   const double deployed = p.totalLength();
   const double link = p.link_lengths.front();
   w.enabled = true;
@@ -208,7 +305,8 @@ CableParams parseConfig(const YAML::Node& root) {
   Section top(root, "");
   CableParams p;
   if (!top.has("cable")) throw ConfigError("cable", "(missing)", "a mapping with links, length, diameter, ...");
-  parseCable(top.sub("cable"), p);
+  CableRest cable_rest;
+  parseCable(top.sub("cable"), p, cable_rest);
   parseLoad(top.sub("load"), p);
   Section base = top.sub("base");
   p.base.motion = parseMotion(base.sub("motion"));
@@ -226,6 +324,8 @@ CableParams parseConfig(const YAML::Node& root) {
   base.rejectUnknownKeys();
   parseFluid(top.sub("fluid"), p);
   p.gravity = top.number("gravity", 9.81, 0.0, 100.0, false, "m/s^2");
+  if (cable_rest.has_sections) parseSections(cable_rest.sections, cable_rest, p);
+  if (top.has("attachments")) parseAttachments(top.raw("attachments"), p);
 
   Section initial = top.sub("initial");
   p.initial.mode = initial.choice("mode", "angles", {"angles", "equilibrium"}) == "angles" ? InitialMode::kAngles

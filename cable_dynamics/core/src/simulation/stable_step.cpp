@@ -32,13 +32,24 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
   Stiffest stiffest;
   const int n = p.n;
   // Hanging tension at the top: the submerged weight of everything below; with a winch, of the longest
-  // deployment (its per-length weight from the tip link, which never leaves the water).
-  double submerged = p.submerged_mass.sum();
-  if (params.winch.enabled) submerged = p.submerged_mass(n - 1) / p.length(n - 1) * params.winch.max_length;
-  const double tension = std::abs(p.gravity * (submerged + p.load_submerged_mass));
+  // deployment (its per-length weight from the tip link, which never leaves the water). With sections
+  // and attachments, floats and heavy parts are counted by magnitude (a float does not lower the tension
+  // a heavy part below it puts on the links above: a bound, never an underestimate of a hanging cable's).
+  double submerged = p.submerged_mass.cwiseAbs().sum();
+  for (const LinkAttachment& a : p.attachments) submerged += std::abs(a.submerged_mass);
+  if (params.winch.enabled) {
+    // The longest deployment at the heaviest per-length weight of its sections (no attachments with a winch).
+    double per_length = 0.0;
+    for (int k = 0; k < n; ++k) {
+      if (p.length(k) > 0.0) per_length = std::max(per_length, std::abs(p.submerged_mass(k) / p.length(k)));
+    }
+    submerged = per_length * params.winch.max_length;
+  }
+  const double tension = p.gravity * (submerged + std::abs(p.load_submerged_mass));
   for (int k = 0; k < n; ++k) {
     const std::string joint = std::to_string(k + 1);
-    const double l = p.length(k), m = p.mass(k) + p.added_mass_per_length * l;
+    // The link's own mass and added mass; its attachments only slow it down (left out: a bound).
+    const double l = p.length(k), m = p.mass(k) + p.added_mass_per_length(k) * l;
     if (l <= 0.0) continue;  // on a winch's drum
     // Highest mode of a beaded string: 2 sqrt(T / (m l)) for links of mass m and length l.
     stiffest.consider(2.0 * std::sqrt(tension / (m * l)), "the string mode of link " + joint + " under the hanging tension");
@@ -52,7 +63,7 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
   }
   if (params.load.mode != LoadMode::kFree && n > 0) {
     const double l = p.length(n - 1);
-    const double tip_mass = p.load_mass + params.load.added_mass + 0.5 * (p.mass(n - 1) + p.added_mass_per_length * l);
+    const double tip_mass = p.load_mass + params.load.added_mass + 0.5 * (p.mass(n - 1) + p.added_mass_per_length(n - 1) * l);
     stiffest.consider(std::sqrt(params.load.coupling_stiffness / tip_mass), "the load coupling's stiffness");
     stiffest.consider(params.load.coupling_damping / tip_mass, "the load coupling's damping");
   }

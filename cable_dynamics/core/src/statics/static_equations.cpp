@@ -15,13 +15,15 @@ StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& cu
       m_(model.links() - problem.first_link),
       length_(m_),
       weight_(m_),
+      weight_moment_(m_),
       bend_stiffness_(m_) {
   const LinkProperties& p = model.properties();
   const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
   for (int i = 0; i < m_; ++i) {
     const int k = first_ + i;
     length_(i) = model.get(&LinkConstants::length, k);
-    weight_(i) = model.get(&LinkConstants::weight, k);
+    weight_(i) = model.get(&LinkConstants::weight, k);  // the attachments' included
+    weight_moment_(i) = model.get(&LinkConstants::weight_moment, k);
     // A winch pays out from the drum: the first deployed link leaves the base's clamp, with the spring of
     // the joint it has in the model.
     bend_stiffness_(i) = bending ? p.stiffness_elevation(k) : 0.0;
@@ -34,15 +36,26 @@ StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& cu
 
 void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,
                                 Eigen::Vector3d& moment) const {
-  const double l = length_(i), w = weight_(i);
-  force = Eigen::Vector3d(0.0, 0.0, w);
-  moment = Eigen::Vector3d(0.0, 0.0, 0.5 * l * w);
+  const int k = first_ + i;
+  const double l = length_(i);
+  force = Eigen::Vector3d(0.0, 0.0, weight_(i));
+  moment = Eigen::Vector3d(0.0, 0.0, weight_moment_(i));
   if (!in_water_) return;
   // The same quadrature as the dynamics, at zero velocity: the relative velocity is the current alone.
   Eigen::Vector3d drag_force, drag_moment;
-  model_.drag().pointwise(current_, l, p, Eigen::Vector3d::Zero(), u, Eigen::Vector3d::Zero(), drag_force, drag_moment);
+  model_.drag().pointwise(current_, l, model_.dragCoefficients(k), p, Eigen::Vector3d::Zero(), u, Eigen::Vector3d::Zero(),
+                          drag_force, drag_moment);
   force += drag_force;
   moment += drag_moment;
+  // The attachments' drag in the current at their points (external_loads.cpp at zero velocity).
+  for (int a = model_.attachmentBegin(k); a < model_.attachmentBegin(k + 1); ++a) {
+    const LinkAttachment& point = model_.attachments()[a];
+    if (point.drag_area <= 0.0) continue;
+    const Eigen::Vector3d at = p + point.offset * u;
+    const Eigen::Vector3d drag = pointDrag(model_.fluidDensity(), point.drag_area, Eigen::Vector3d::Zero(), current_.at(at.z()));
+    force += drag;
+    moment += point.offset * drag;
+  }
 }
 
 Eigen::Vector3d StaticEquations::loadForceFree(const Eigen::Vector3d& tip) const {

@@ -81,6 +81,7 @@ class StaticEquations {
   int first_, m_;
   Eigen::VectorXd length_;          ///< (m) [m]
   Eigen::VectorXd weight_;          ///< (m) submerged weight, + down [N]
+  Eigen::VectorXd weight_moment_;   ///< (m) its first moment about the base end, along the axis [N m]
   Eigen::VectorXd bend_stiffness_;  ///< (m) joint i's k_b [N m/rad]
   bool has_bend_, in_water_;
   double coupling_stiffness_;       ///< [N/m], 0 when the tip is free

@@ -25,8 +25,8 @@ struct DenseWorkspace {
   Eigen::VectorXd rhs;               ///< (3n) generalized forces [N m]
   Eigen::VectorXd omega_rate;        ///< (3n) solved angular accelerations [rad/s^2]
   Eigen::LLT<Eigen::MatrixXd> llt;   ///< Cholesky factor of mass_matrix
-  Matrix3dVector tensor;             ///< (n) A_k = m' I + m_a' (I - u u^T) per length [kg/m]
-  Matrix3dVector outboard;           ///< (n) B_k = sum_{j>k} l_j A_j + load [kg]
+  Matrix3dVector tensor;             ///< (n) l_k A_k + attachments, A_k = m' I + m_a' (I - u u^T) [kg]
+  Matrix3dVector outboard;           ///< (n) B_k = sum_{j>k} tensor_j + load [kg]
   Matrix3dVector column;             ///< (n) E_j [u_j]x, shared by column j of M [kg m]
   Eigen::Matrix3Xd inertial_force;   ///< (3 x n) A (l a0 + l^2/2 beta) [N]
   Eigen::Matrix3Xd inertial_moment;  ///< (3 x n) its first moment [N m]

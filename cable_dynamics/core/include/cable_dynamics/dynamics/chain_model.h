@@ -57,6 +57,16 @@ class ChainModel {
   bool hasSprings() const { return has_springs_; }
   double fluidDensity() const { return fluid_density_; }  ///< [kg/m^3], 0 in air
   const LinkDrag& drag() const { return drag_; }
+  /// Link k's Morison coefficients 1/2 rho C_n d and 1/2 rho C_t pi d (its section's) [kg/m^2].
+  DragCoefficients dragCoefficients(int k) const {
+    return {get(&LinkConstants::drag_normal, k), get(&LinkConstants::drag_tangential, k)};
+  }
+  /// The point attachments, ordered by link (docs/MODEL.md section 9); those of link k are
+  /// [attachmentBegin(k), attachmentBegin(k + 1)).
+  const std::vector<LinkAttachment>& attachments() const { return properties_.attachments; }
+  int attachmentBegin(int k) const { return attachment_begin_[k]; }
+  /// true when some attachment has drag (the drag pass then visits them).
+  bool attachmentDrag() const { return attachment_drag_; }
   const LoadConstants& load() const { return load_; }
   bool hasWinch() const { return has_winch_; }
 
@@ -81,6 +91,14 @@ class ChainModel {
   double fluid_density_;
   LinkDrag drag_;
   LoadConstants load_;
+  /// Per slot, the sums over its attachments: structure (m, m s, m s^2), added mass (the same moments),
+  /// submerged mass (m_s, m_s s).
+  struct PointSums {
+    double mass0 = 0.0, mass1 = 0.0, mass2 = 0.0, added0 = 0.0, added1 = 0.0, added2 = 0.0, sub0 = 0.0, sub1 = 0.0;
+  };
+  std::vector<PointSums> points_;
+  std::vector<int> attachment_begin_;
+  bool attachment_drag_ = false;
   std::vector<LinkConstants> lanes_;  // C++17's allocator honours the 64-byte alignment
 };
 

@@ -48,11 +48,34 @@ Eigen::Vector3d morisonDragPerLength(const Eigen::Vector3d& axis, const Eigen::V
 /// the velocity x' = v + s u', integrated over the length l. With x'' = a + s u'' and P x' = P v + s u'
 /// (u' is normal to u) it is -m_a' [l a.Pv + l^2/2 (a.u' + u''.Pv) + l^3/3 u''.u'].
 /// added_per_length m_a' [kg/m], l [m], unit axis u, axis_rate u' [1/s], velocity v [m/s].
-inline void addedMassPowerWeights(double added_per_length, double l, const Vec3& u, const Vec3& axis_rate,
+EIGEN_ALWAYS_INLINE void addedMassPowerWeights(double added_per_length, double l, const Vec3& u, const Vec3& axis_rate,
                                   const Vec3& velocity, Vec3& base_weight, Vec3& axis_weight) {
   const Vec3 normal_velocity = velocity - dot(u, velocity) * u;
   base_weight = -added_per_length * (l * normal_velocity + (0.5 * l * l) * axis_rate);
   axis_weight = -added_per_length * ((0.5 * l * l) * normal_velocity + (l * l * l / 3.0) * axis_rate);
+}
+
+/// Morison coefficients of one link: per length the drag is normal |v_n| v_n + tangential |v_t| v_t.
+struct DragCoefficients {
+  double normal = 0.0;      ///< 1/2 rho C_n d [kg/m^2]
+  double tangential = 0.0;  ///< 1/2 rho C_t pi d [kg/m^2]
+};
+
+/// Isotropic drag of a point (an attachment) of C_d A = `drag_area` [m^2]: 1/2 rho C_d A |v| v, v = current - velocity [N].
+inline Eigen::Vector3d pointDrag(double density, double drag_area, const Eigen::Vector3d& velocity,
+                                 const Eigen::Vector3d& current) {
+  const Eigen::Vector3d relative = current - velocity;
+  return (0.5 * density * drag_area * relative.norm()) * relative;
+}
+
+/// addedMassPowerWeights() for lane i of `c`, with its attachments' isotropic added mass: a point at s_p
+/// moves at v + s_p u' and accelerates at a + s_p u'', so the force -m_pa (a + s_p u'') has the power
+/// -(sum m_pa (v + s_p u')).a - (sum m_pa s_p (v + s_p u')).u''.
+EIGEN_ALWAYS_INLINE void linkAddedMassPowerWeights(const LinkConstants& c, int i, const Vec3& u, const Vec3& axis_rate,
+                                      const Vec3& velocity, Vec3& base_weight, Vec3& axis_weight) {
+  addedMassPowerWeights(c.added[i], c.length[i], u, axis_rate, velocity, base_weight, axis_weight);
+  base_weight = base_weight - (c.point_added0[i] * velocity + c.point_added1[i] * axis_rate);
+  axis_weight = axis_weight - (c.point_added1[i] * velocity + c.point_added2[i] * axis_rate);
 }
 
 /// Gauss-Legendre nodes on [0, 1] and their weights (sum 1), for 1 to 8 points.
@@ -61,12 +84,18 @@ void gaussLegendreUnit(int points, double* nodes, double* weights);
 /// Morison drag integrated along straight links by Gauss-Legendre quadrature (fluid.drag_points points).
 class LinkDrag {
  public:
-  LinkDrag(const FluidParams& fluid, double diameter);
+  /// The quadrature (fluid.drag_points); the coefficients are per link (LinkConstants, sections).
+  explicit LinkDrag(const FluidParams& fluid);
 
   int points() const { return points_; }
 
+  /// 1/2 rho C_n d and 1/2 rho C_t pi d for a cylinder of diameter d [m] in a fluid of density rho [kg/m^3].
+  static DragCoefficients coefficients(double density, double diameter, double drag_normal, double drag_tangential) {
+    return {0.5 * density * diameter * drag_normal, 0.5 * density * diameter * drag_tangential * M_PI};
+  }
+
   /// Adds the drag in a current that is the same at every depth [m/s] to the eight links of `block`
-  /// (their lengths from `constants`; base_vel, u and axis_rate from `block`): the force [N] to `force`, its first moment about the base
+  /// (their lengths and drag coefficients from `constants`; base_vel, u and axis_rate from `block`): the force [N] to `force`, its first moment about the base
   /// end, the integral of s f(s) ds [N m], to `moment` (the torque about the base end is u x moment), and
   /// sets `drag_power` [W]. With one current c the relative water velocity is c - v - s u', and u' is
   /// normal to u: its tangential part (c - v).u is the same at every s, and its normal part is n0 - s u'
@@ -102,27 +131,26 @@ class LinkDrag {
     for (int i = 0; i < kBlockLanes; ++i) {
       const double l = constants.length[i];
       const Vec3 axis = block.u[i], axis_rate = block.axis_rate[i], n0 = normal[i];
-      const double tangential = tangential_coefficient_ * std::abs(along[i]) * along[i] * l;  // [N]
-      const Vec3 force = normal_coefficient_ * (sum0[i] * n0 - sum1[i] * axis_rate) + tangential * axis;
-      const Vec3 moment = normal_coefficient_ * (sum1[i] * n0 - sum2[i] * axis_rate) + (0.5 * l * tangential) * axis;
+      const double normal_coefficient = constants.drag_normal[i];
+      const double tangential = constants.drag_tangential[i] * std::abs(along[i]) * along[i] * l;  // [N]
+      const Vec3 force = normal_coefficient * (sum0[i] * n0 - sum1[i] * axis_rate) + tangential * axis;
+      const Vec3 moment = normal_coefficient * (sum1[i] * n0 - sum2[i] * axis_rate) + (0.5 * l * tangential) * axis;
       block.force.set(i, block.force[i] + force);
       block.moment.set(i, block.moment[i] + moment);
       block.drag_power[i] = dot(force, block.base_vel[i]) + dot(moment, axis_rate);
     }
   }
 
-  /// Drag on a link of length l [m] with base end at `base` [m] moving at `velocity` [m/s], unit axis u
+  /// Drag on a link of length l [m] and coefficients `coefficients` with base end at `base` [m] moving at `velocity` [m/s], unit axis u
   /// turning at u' = `axis_rate` [1/s], by the same quadrature evaluated point by point with the current
   /// at each point's depth: the total force [N] and its first moment about the base end [N m]. What
   /// a depth profile needs, and the reference the tests hold addUniform() against.
-  void pointwise(const CurrentField& current, double l, const Eigen::Vector3d& base, const Eigen::Vector3d& velocity,
+  void pointwise(const CurrentField& current, double l, const DragCoefficients& coefficients,
+                 const Eigen::Vector3d& base, const Eigen::Vector3d& velocity,
                  const Eigen::Vector3d& axis, const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
                  Eigen::Vector3d& moment) const;
 
  private:
-  double density_, diameter_, drag_normal_, drag_tangential_;
-  double normal_coefficient_;      ///< 1/2 rho C_n d [kg/m^3 m], times |v_n| v_n per length
-  double tangential_coefficient_;  ///< 1/2 rho C_t pi d [kg/m^3 m], times |v_t| v_t per length
   int points_;
   double nodes_[8], weights_[8];
 };

@@ -78,19 +78,31 @@ struct LanesSymmetric3 {
 };
 
 /// Eight links' constants (SI units), set once by ChainModel and read by every pass. Lanes past the
-/// last link: zero length and mass (inverse_polar 0), so they stay finite and add nothing.
+/// last link: zero length and mass (inverse_polar 0), so they stay finite and add nothing. A link's
+/// attachments (point masses at distances s_p from its base end, docs/MODEL.md section 9) are folded into
+/// its moments: "inertia" below is mass plus added mass, "structure" mass alone.
 struct alignas(64) LinkConstants {
   double length[kBlockLanes];           ///< l [m]
   double mass_per_length[kBlockLanes];  ///< m' [kg/m]
   double added[kBlockLanes];            ///< m_a', normal added mass per length [kg/m]
   double across[kBlockLanes];           ///< m' + m_a' [kg/m]
-  double weight[kBlockLanes];           ///< submerged weight [N]
-  double half_moment[kBlockLanes];      ///< l^2/2 (m' + m_a') [kg m]
-  double third_moment[kBlockLanes];     ///< l^3/3 (m' + m_a') [kg m^2]
-  double own_transverse[kBlockLanes];   ///< l^3/3 (m' + m_a') + thickness inertia, about the base end [kg m^2]
+  double weight[kBlockLanes];           ///< submerged weight, attachments included [N]
+  double weight_moment[kBlockLanes];    ///< its first moment about the base end, along the axis [N m]
+  double translational[kBlockLanes];    ///< l (m' + m_a') + sum (m_p + m_pa), isotropic inertia [kg]
+  double half_moment[kBlockLanes];      ///< l^2/2 (m' + m_a') + sum (m_p + m_pa) s_p [kg m]
+  double third_moment[kBlockLanes];     ///< l^3/3 (m' + m_a') + sum (m_p + m_pa) s_p^2 [kg m^2]
+  double own_transverse[kBlockLanes];   ///< third_moment + thickness inertia, about the base end [kg m^2]
   double thick_transverse[kBlockLanes]; ///< thickness part of the transverse inertia, m r^2/4 [kg m^2]
   double polar[kBlockLanes];            ///< I_P [kg m^2]
   double inverse_polar[kBlockLanes];    ///< 1/I_P, 0 in the padding lanes [1/(kg m^2)]
+  double structure0[kBlockLanes];       ///< m' l + sum m_p, the mass (kinetic energy) [kg]
+  double structure1[kBlockLanes];       ///< m' l^2/2 + sum m_p s_p [kg m]
+  double structure2[kBlockLanes];       ///< m' l^3/3 + sum m_p s_p^2 [kg m^2]
+  double point_added0[kBlockLanes];     ///< sum m_pa, the attachments' isotropic added mass [kg]
+  double point_added1[kBlockLanes];     ///< sum m_pa s_p [kg m]
+  double point_added2[kBlockLanes];     ///< sum m_pa s_p^2 [kg m^2]
+  double drag_normal[kBlockLanes];      ///< 1/2 rho C_n d, times |v_n| v_n per length [kg/m^2]
+  double drag_tangential[kBlockLanes];  ///< 1/2 rho C_t pi d, times |v_t| v_t per length [kg/m^2]
 };
 
 /// Eight links' state-derived quantities and the recursion's intermediate results, rewritten by every

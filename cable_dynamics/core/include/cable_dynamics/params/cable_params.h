@@ -172,6 +172,31 @@ struct WinchParams {
   double link_length = 0.0;       ///< length of a link added at the winch [m] (the base link's configured length)
 };
 
+/// One section of the cable (`cable.sections`): a stretch of `length` along the configured cable, counted
+/// from its base, with properties of its own. The loader fills every field (a key left out takes the
+/// cable's value). A link takes the properties of the section its centre lies in (docs/MODEL.md section 9).
+struct SectionParams {
+  double length = 0.0;              ///< [m]
+  double diameter = 0.025;          ///< outer diameter [m]
+  double mass_per_length = 0.6;     ///< in air [kg/m]
+  double bending_rigidity = 0.0;    ///< EI [N m^2] (used when the cable's springs come from rigidities)
+  double torsional_rigidity = 0.0;  ///< GJ [N m^2]
+  double drag_normal = 1.2;         ///< Morison C_n [-]
+  double drag_tangential = 0.01;    ///< skin friction C_t [-]
+  double added_mass = 1.0;          ///< added-mass coefficient C_a normal to the cable [-]
+};
+
+/// A point attachment (`attachments`): a buoyancy module (float), a clump weight, a sensor, at arc length
+/// `arc_length` from the base of the configured cable. Its submerged weight, drag and mass act at that
+/// point of the link that holds it (docs/MODEL.md section 9).
+struct AttachmentParams {
+  double arc_length = 0.0;  ///< [m] from the base of the configured cable
+  double mass = 0.0;        ///< in air [kg]
+  double volume = 0.0;      ///< displaced volume [m^3]; volume > mass / rho floats
+  double drag_area = 0.0;   ///< C_d A [m^2], isotropic: 1/2 rho C_d A |v| v with the point's relative velocity
+  double added_mass = 0.0;  ///< isotropic added mass [kg]
+};
+
 /// Every parameter of one cable, validated by the config loader; SI units.
 struct CableParams {
   /// n, number of rigid links; with a winch, every slot the longest deployment needs (the first
@@ -181,6 +206,11 @@ struct CableParams {
   WinchParams winch;
   double diameter = 0.025;                ///< outer diameter [m]
   double mass_per_length = 0.6;           ///< in air [kg/m]
+  /// Sections along the configured cable from its base (empty: one uniform cable of the values above).
+  /// Their lengths add up to the configured cable's length. With a winch the drum's slots take the
+  /// first (base) section's properties.
+  std::vector<SectionParams> sections;
+  std::vector<AttachmentParams> attachments;  ///< point attachments, by arc length
   StiffnessParams stiffness;
   DampingParams damping;
   LoadParams load;
@@ -196,16 +226,31 @@ struct CableParams {
   double deployedLength() const;
 };
 
-/// Quantities derived per link from CableParams; vectors have size n, index k-1 for link k.
+/// An attachment placed on its link (LinkProperties::attachments).
+struct LinkAttachment {
+  int link = 0;                 ///< 0-based slot that holds it
+  double offset = 0.0;          ///< distance from that link's base end [m], in [0, l]
+  double mass = 0.0;            ///< in air [kg]
+  double submerged_mass = 0.0;  ///< mass - rho V [kg] (negative: a float)
+  double added_mass = 0.0;      ///< isotropic [kg]
+  double drag_area = 0.0;       ///< C_d A [m^2]
+};
+
+/// Quantities derived per link from CableParams; vectors have size n, index k-1 for link k. The mass,
+/// inertias and submerged mass are the cable's own (its section's); the attachments are listed apart.
 struct LinkProperties {
   int n = 0;
-  double radius = 0.0125;              ///< outer radius of the cable [m]
+  Eigen::VectorXd radius;              ///< (n) outer radius of the link's section [m]
   Eigen::VectorXd length;              ///< (n) [m]
   Eigen::VectorXd mass;                ///< (n) in air [kg]
   Eigen::VectorXd inertia_transverse;  ///< (n) about the CoM, solid cylinder m(l^2/12 + r^2/4) [kg m^2]
   Eigen::VectorXd inertia_polar;       ///< (n) about the link axis, solid cylinder m r^2/2 [kg m^2]
   Eigen::VectorXd submerged_mass;      ///< (n) mass minus displaced water, pi r^2 l rho [kg]
-  double added_mass_per_length = 0.0;  ///< normal added mass per length, C_a rho pi r^2 [kg/m]
+  Eigen::VectorXd added_mass_per_length;  ///< (n) normal added mass per length, C_a rho pi r^2 [kg/m]
+  Eigen::VectorXd drag_normal;         ///< (n) Morison C_n of the link's section [-]
+  Eigen::VectorXd drag_tangential;     ///< (n) skin friction C_t [-]
+  Eigen::VectorXi section;             ///< (n) 0-based index of the link's section (0 without sections)
+  std::vector<LinkAttachment> attachments;  ///< by link, in the order of arc length
   Eigen::VectorXd stiffness_elevation; ///< (n) per joint [N m/rad]
   Eigen::VectorXd stiffness_azimuth;   ///< (n) [N m/rad]
   Eigen::VectorXd stiffness_torsion;   ///< (n) [N m/rad]
