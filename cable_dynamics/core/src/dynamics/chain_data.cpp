@@ -26,6 +26,8 @@ ChainData::ChainData(const ChainModel& model)
     for (int i = 0; i < kBlockLanes; ++i) links.block(b).u.set(i, {0.0, 0.0, 1.0});
   }
   for (Eigen::Matrix3Xd* m : {&joint_force, &spring_torque, &damping_torque}) m->setZero(3, n);
+  clamp_axis = model.properties().clamp_axis;
+  clamp_twist = model.properties().clamp_twist;
   paper_q.setZero(3 * n);
   paper_qd.setZero(3 * n);
   paper_psi.setZero(n);

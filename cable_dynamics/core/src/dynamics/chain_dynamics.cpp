@@ -63,7 +63,7 @@ void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
 
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
   if (!allFinite(x.tail(StateLayout::moving(links(), model_.firstLink())))) return false;  // what the passes read
-  if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
+  applyEnds(ends);
   computeKinematics(model_, data_, x, ends);
   computeExternalLoads(model_, data_, ends);
   computeJointTorques(model_, data_, x);
@@ -77,9 +77,19 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   // velocity (with a winch, the paid-out cable's), and the paid-out cable brings its own energy.
   const int first = model_.firstLink();
   const Vec3 exit_velocity = data_.links.of(first).base_vel[LinkBlocks::lane(first)];
-  data_.input_power = data_.joint_force.col(first).dot(toEigen(exit_velocity)) + data_.coupling.dot(data_.tip_velocity);
+  // A clamp turning with the vessel works through the torque it holds the base link with.
+  data_.input_power = data_.joint_force.col(first).dot(toEigen(exit_velocity)) + data_.coupling.dot(data_.tip_velocity) +
+                      data_.clamp_torque.dot(data_.clamp_omega);
   if (ends.winch) data_.input_power += ends.winch_speed * paidOutEnergyPerLength(model_, data_, exit_velocity);
   return true;
+}
+
+void ChainDynamics::applyEnds(const EndInputs& ends) {
+  if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
+  const LinkProperties& p = model_.properties();
+  data_.clamp_axis = ends.clamp_moves ? ends.clamp_axis : p.clamp_axis;
+  data_.clamp_twist = ends.clamp_moves ? ends.clamp_twist : p.clamp_twist;
+  data_.clamp_omega = ends.clamp_moves ? ends.clamp_omega : Eigen::Vector3d::Zero();
 }
 
 bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& xdot) {
@@ -129,7 +139,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
 }
 
 double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude) {
-  if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
+  applyEnds(ends);
   computeKinematics(model_, data_, x, ends);
   return solvedMechanicalEnergy(x, magnitude);
 }
@@ -145,6 +155,7 @@ double ChainDynamics::solvedMechanicalEnergy(const Eigen::VectorXd& x, double& m
 void ChainDynamics::generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, bool with_dampers,
                                       Eigen::VectorXd& out) {
   data_.dense.allocate(links());  // a no-op after construction with the semi-implicit integrator
+  applyEnds(ends);
   computeKinematics(model_, data_, x, ends);
   computeExternalLoads(model_, data_, ends);
   computeJointTorques(model_, data_, x, with_dampers);

@@ -51,10 +51,10 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
   const int first = model.firstLink();
   for (int k = first; k < model.links(); ++k) {
     const bool inner = k > first;  // joint `first` is the base's
-    const Eigen::Vector3d prev = inner ? links.get(&LinkBlock::u, k - 1) : p.clamp_axis;
+    const Eigen::Vector3d prev = inner ? links.get(&LinkBlock::u, k - 1) : data.clamp_axis;
     const Eigen::Vector3d axis = links.get(&LinkBlock::u, k);
     const JointGeometry g =
-        jointGeometry(prev, axis, x(StateLayout::twist(k)), inner ? x(StateLayout::twist(k - 1)) : p.clamp_twist);
+        jointGeometry(prev, axis, x(StateLayout::twist(k)), inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
     // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
     const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * bendOverSine(g.bend, g.sine) * g.cross;
     // Twist: a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
@@ -62,13 +62,14 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
     const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
     // Dampers on the relative angular velocity: across the mean axis (bending) and about it (twist).
     const Eigen::Vector3d relative =
-        links.get(&LinkBlock::omega, k) - (inner ? links.get(&LinkBlock::omega, k - 1) : Eigen::Vector3d::Zero());
+        links.get(&LinkBlock::omega, k) - (inner ? links.get(&LinkBlock::omega, k - 1) : data.clamp_omega);
     const Eigen::Vector3d direction = (prev + axis).normalized();
     const double about = relative.dot(direction);
     const Eigen::Vector3d damper =
         -p.damping_elevation(k) * (relative - about * direction) - p.damping_torsion(k) * about * direction;
     data.spring_torque.col(k) += bend_torque + twist_torque;
     data.damping_torque.col(k) += damper;
+    if (!inner) data.clamp_torque = bend_torque + twist_torque + damper;
     if (inner) {
       data.spring_torque.col(k - 1) -= bend_torque + twist_torque;
       data.damping_torque.col(k - 1) -= damper;
@@ -81,6 +82,7 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
 void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, bool with_dampers) {
   const bool paper = model.stiffnessModel() == StiffnessModel::kPaper;
   if (paper && !model.hasSprings()) return;  // all zero since construction (the presets)
+  data.clamp_torque.setZero();
   data.spring_torque.setZero();
   data.damping_torque.setZero();
   if (paper) {
@@ -119,9 +121,9 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
   const int first = model.firstLink();
   for (int k = first; k < model.links(); ++k) {
     const bool inner = k > first;
-    const Eigen::Vector3d prev = inner ? links.get(&LinkBlock::u, k - 1) : p.clamp_axis;
+    const Eigen::Vector3d prev = inner ? links.get(&LinkBlock::u, k - 1) : data.clamp_axis;
     const JointGeometry g = jointGeometry(prev, links.get(&LinkBlock::u, k), x(StateLayout::twist(k)),
-                                          inner ? x(StateLayout::twist(k - 1)) : p.clamp_twist);
+                                          inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
     energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
   }
   return energy;

@@ -49,6 +49,7 @@ CableSimulator::CableSimulator(const CableParams& params)
       limits_(stepLimits(*std::min_element(params.link_lengths.begin(), params.link_lengths.end()), params.gravity)),
       dt_(params.simulation.dt) {
   rejectSingularPaperSprings(params);
+  ends_.setRestClamp(dynamics_.properties().clamp_axis, dynamics_.properties().clamp_twist);
   const int size = dynamics_.stateSize();
   x_.setZero(size);
   x_start_.setZero(size);
@@ -80,6 +81,9 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   problem.tip_coupled = ends.load_coupled;
   problem.target_position = ends.target_position;
   problem.first_link = firstLink();
+  problem.clamp_moves = ends.clamp_moves;
+  problem.clamp_axis = ends.clamp_axis;
+  problem.clamp_twist = ends.clamp_twist;
   double magnitude = 0.0;
   dynamics_.mechanicalEnergy(x_, ends, magnitude);  // sets the winch's link to its present length
   StaticSolution s = solveStatics(dynamics_.model(), dynamics_.current(), problem, options);

@@ -15,12 +15,46 @@ void motionAt(const MotionParams& m, const Eigen::Vector3d& offset, double t, Ei
   a = worldToPaper(a);
 }
 
+namespace {
+
+/// P = diag(1, -1, -1): the half turn about x between the world and the paper frame.
+Eigen::Matrix3d worldToPaperRotation(const Eigen::Matrix3d& world) {
+  const Eigen::Matrix3d p = Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal();
+  return p * world * p;
+}
+
+/// The twist sigma = psi + phi of a link frame F = Rz(-psi) Rx(-te) Rz(-phi) (paper frame; the frame whose
+/// angular velocity is -psi' z - te' n - phi' u, paper_coordinates.cpp), nearest to `near` [rad]: for the
+/// z-x-z angles (a, b, c) of F, F00 + F11 = cos(a + c)(1 + cos b) and F10 - F01 = sin(a + c)(1 + cos b).
+double frameTwist(const Eigen::Matrix3d& f, double near) {
+  const double twist = -std::atan2(f(1, 0) - f(0, 1), f(0, 0) + f(1, 1));
+  return twist + 2.0 * M_PI * std::round((near - twist) / (2.0 * M_PI));
+}
+
+/// vee(R' R^T): the angular velocity of a rotation R with rate R' [rad/s].
+Eigen::Vector3d angularVelocity(const Eigen::Matrix3d& rotation, const Eigen::Matrix3d& rate) {
+  const Eigen::Matrix3d w = rate * rotation.transpose();
+  return 0.5 * Eigen::Vector3d(w(2, 1) - w(1, 2), w(0, 2) - w(2, 0), w(1, 0) - w(0, 1));
+}
+
+}  // namespace
+
+void EndConditions::setRestClamp(const Eigen::Vector3d& axis, double twist) {
+  const double elevation = std::atan2(std::hypot(axis.x(), axis.y()), axis.z());
+  rest_clamp_ = Eigen::AngleAxisd(-twist, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+                Eigen::AngleAxisd(-elevation, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  rest_clamp_twist_ = twist;
+  external_clamp_twist_ = twist;
+}
+
 EndConditions::EndConditions(const BaseParams& base, const LoadParams& load, const WinchParams& winch)
     : base_(base), load_(load), has_winch_(winch.enabled), winch_(winch) {}
 
 void EndConditions::reset() {
   external_load_ = false;
   external_base_ = false;
+  load_attitude_ = base_attitude_ = Eigen::Quaterniond::Identity();
+  external_clamp_twist_ = rest_clamp_twist_;
 }
 
 EndInputs EndConditions::at(double t) const {
@@ -40,6 +74,19 @@ EndInputs EndConditions::at(double t) const {
     motionAt(load_.motion, load_.attachment, t, ends.target_position, ends.target_velocity, acceleration);
     ends.target_position += initial_tip_;
     if (load_.mode == LoadMode::kAnchored) ends.target_velocity.setZero();
+  }
+  // The clamp turns with the vessel: its frame is the vessel's rotation of its rest frame.
+  if (external_base_ ? base_attitude_.coeffs() != Eigen::Quaterniond::Identity().coeffs()
+                     : !base_.motion.attitude_amplitude.isZero()) {
+    Eigen::Matrix3d rotation = base_attitude_.toRotationMatrix(), rate = Eigen::Matrix3d::Zero(), acceleration;
+    if (!external_base_) attitudeAt(base_.motion, t, rotation, rate, acceleration);
+    const Eigen::Matrix3d frame = worldToPaperRotation(rotation) * rest_clamp_;
+    ends.clamp_moves = true;
+    ends.clamp_axis = frame.col(2);
+    ends.clamp_twist = frameTwist(frame, external_base_ ? external_clamp_twist_ : rest_clamp_twist_);
+    // An external attitude comes without its rate (the pose stream's rotation is not differentiated):
+    // the clamp's damper then acts on the base link's own angular velocity.
+    ends.clamp_omega = external_base_ ? Eigen::Vector3d::Zero() : worldToPaper(angularVelocity(rotation, rate));
   }
   if (has_winch_) {
     const WinchMotion m = winch_.at(t);
@@ -65,6 +112,8 @@ void EndConditions::setBaseTarget(const Eigen::Vector3d& position, const Eigen::
   base_position_ = worldToPaper(position);
   base_velocity_ = worldToPaper(velocity);
   base_attitude_ = attitude.normalized();
+  const Eigen::Matrix3d frame = worldToPaperRotation(base_attitude_.toRotationMatrix()) * rest_clamp_;
+  external_clamp_twist_ = frameTwist(frame, external_clamp_twist_);  // continuous through whole turns
 }
 
 namespace {

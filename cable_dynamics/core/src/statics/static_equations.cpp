@@ -31,7 +31,7 @@ StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& cu
   has_bend_ = (bend_stiffness_.array() > 0.0).any();
   in_water_ = model.fluidDensity() > 0.0;
   coupling_stiffness_ = problem.tip_coupled ? model.load().coupling_stiffness : 0.0;
-  clamp_axis_ = p.clamp_axis;
+  clamp_axis_ = problem.clamp_moves ? problem.clamp_axis : p.clamp_axis;
 }
 
 void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,

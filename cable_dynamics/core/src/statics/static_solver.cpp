@@ -82,8 +82,8 @@ void writeSolution(const ChainModel& model, const StaticEquations& eq, const Sta
   out.tension = Eigen::VectorXd::Zero(n);
   out.joint_force = Eigen::Matrix3Xd::Zero(3, n);
   // Zero twist at every joint: sigma_k = sigma_{k-1} + Omega(u_{k-1}, u_k), from the clamp's frame.
-  Eigen::Vector3d prev = p.clamp_axis;
-  double sigma = p.clamp_twist;
+  Eigen::Vector3d prev = eq.problem().clamp_moves ? eq.problem().clamp_axis : p.clamp_axis;
+  double sigma = eq.problem().clamp_moves ? eq.problem().clamp_twist : p.clamp_twist;
   for (int i = 0; i < eq.links(); ++i) {
     const int k = first + i;
     const Eigen::Vector3d u = s.axis.col(i);

@@ -58,6 +58,13 @@ struct ChainData {
   Eigen::Matrix3Xd spring_torque;   ///< (3 x n) joint springs on each link [N m]
   Eigen::Matrix3Xd damping_torque;  ///< (3 x n) joint dampers on each link [N m]
 
+  // The base's clamp for this evaluation (the model's, or turned with the vessel: EndInputs), and the
+  // torque its springs and dampers put on the base link [N m] (the vessel's reaction is minus it).
+  Eigen::Vector3d clamp_axis = Eigen::Vector3d::UnitZ();
+  double clamp_twist = 0.0;
+  Eigen::Vector3d clamp_omega = Eigen::Vector3d::Zero();  ///< [rad/s]
+  Eigen::Vector3d clamp_torque = Eigen::Vector3d::Zero();
+
   // Powers [W]: of the drag, of the added-mass force, of the moving base and the coupling.
   double drag_power = 0.0, added_mass_power = 0.0, input_power = 0.0;
 

@@ -87,6 +87,8 @@ class ChainDynamics {
   void stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const;
 
  private:
+  /// What the ends set in the model and the data before any pass: the winch's link length, the clamp.
+  void applyEnds(const EndInputs& ends);
   /// The passes up to the accelerations (and all joint forces or only joint 0's).
   bool solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces);
   void writeRates(Eigen::VectorXd& xdot) const;  ///< x' from the solved state, after solve()

@@ -30,6 +30,12 @@ struct EndInputs {
   bool load_coupled = false;                                    ///< PD coupling of the tip to a target
   Eigen::Vector3d target_position = Eigen::Vector3d::Zero();    ///< [m]
   Eigen::Vector3d target_velocity = Eigen::Vector3d::Zero();    ///< [m/s]
+  /// The base's clamp turns with the vessel (bending model): its axis (unit), its twist sigma [rad] and
+  /// its angular velocity [rad/s]. Otherwise the clamp is LinkProperties::clamp_axis and clamp_twist, at rest.
+  bool clamp_moves = false;
+  Eigen::Vector3d clamp_axis = Eigen::Vector3d::UnitZ();
+  double clamp_twist = 0.0;
+  Eigen::Vector3d clamp_omega = Eigen::Vector3d::Zero();
   /// A winch pays the cable out at the base: the winch's link (ChainModel::firstLink()) has length
   /// winch_length and grows at winch_speed, its material sliding out along its axis at that speed.
   bool winch = false;

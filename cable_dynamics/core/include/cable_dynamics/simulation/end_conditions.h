@@ -30,6 +30,10 @@ class EndConditions {
   /// Back to the configured motions (external targets dropped).
   void reset();
 
+  /// The base clamp at rest (paper frame: unit axis, twist sigma [rad]; LinkProperties): with a vessel
+  /// attitude the clamp turns with the vessel (EndInputs::clamp_*).
+  void setRestClamp(const Eigen::Vector3d& axis, double twist);
+
   /// The winch at the base (when configured), which sets the deployed length.
   bool hasWinch() const { return has_winch_; }
   Winch& winch() { return winch_; }
@@ -57,6 +61,9 @@ class EndConditions {
   Eigen::Vector3d initial_tip_ = Eigen::Vector3d::Zero();  ///< paper frame [m]
   bool external_load_ = false, external_base_ = false;
   bool has_winch_ = false;
+  Eigen::Matrix3d rest_clamp_ = Eigen::Matrix3d::Identity();  ///< the clamp's frame at rest, paper frame
+  double rest_clamp_twist_ = 0.0;                             ///< [rad]
+  double external_clamp_twist_ = 0.0;  ///< the clamp's twist under the last external attitude, unwrapped [rad]
   Winch winch_;
   double outboard_length_ = 0.0;  ///< [m]
   // External targets, converted to the paper frame once [m], [m/s].

@@ -43,6 +43,11 @@ struct StaticProblem {
   /// Links [first_link, n) are deployed, the first of them leaving the base (and its clamp); the
   /// others are not part of the problem (a winch's drum). 0 = all.
   int first_link = 0;
+  /// The base's clamp turned with the vessel (EndInputs::clamp_*): its unit axis and twist [rad] in place
+  /// of the model's LinkProperties::clamp_axis and clamp_twist.
+  bool clamp_moves = false;
+  Eigen::Vector3d clamp_axis = Eigen::Vector3d::UnitZ();
+  double clamp_twist = 0.0;
 };
 
 struct StaticOptions {
