@@ -10,39 +10,13 @@
 
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/params/config_loader.h"
+#include "step_timing.h"
 
-namespace {
-
-double stepNanoseconds(cable_dynamics::CableSimulator& sim, double target_seconds) {
-  long steps = 0;
-  const auto start = std::chrono::steady_clock::now();
-  double elapsed = 0.0;
-  while (elapsed < target_seconds) {
-    for (int i = 0; i < 10; ++i) sim.step();
-    steps += 10;
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  return 1e9 * elapsed / steps;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   // Optional argument: the sizes, comma separated (default 10,30,100,300,1000).
-  std::vector<int> sizes = {10, 30, 100, 300, 1000};
-  if (argc > 1) {
-    sizes.clear();
-    for (std::string list = argv[1]; !list.empty();) {
-      const size_t comma = list.find(',');
-      sizes.push_back(std::stoi(list.substr(0, comma)));
-      list = comma == std::string::npos ? "" : list.substr(comma + 1);
-    }
-  }
-  const char* const config =
-      "cable: {links: 1, length: 50.0, diameter: 0.025, mass_per_length: 0.6}\n"
-      "load: {mass: 10.0, volume: 0.005, drag_area: 0.2}\n"
-      "fluid: {density: 1025.0, drag_normal: 1.2, drag_tangential: 0.01, added_mass: 1.0, current: [1.0, 0.0, 0.0]}\n"
-      "initial: {elevation: 0.3}\n";
+  const std::vector<int> sizes = bench::sizesFrom(argc, argv, {10, 30, 100, 300, 1000});
+  const char* const config = bench::fluidCableConfig();
   std::printf("\n5) cable_dynamics with full fluid forces (water, 1 m/s current, drag at 3 Gauss points per link,\n"
               "   added mass, 10 kg load), RK4, dt = 1 ms: wall time per step [ns], median of 5 interleaved\n");
 #ifdef CABLE_DYNAMICS_NO_CLONES
@@ -65,15 +39,11 @@ int main(int argc, char** argv) {
         cable_dynamics::CableSimulator sim(params);
         for (int i = 0; i < 20; ++i) sim.step();  // warm-up; also leaves the start transient
         auto& times = std::string(formulation) == "paper" ? dense_times : recursive_times;
-        times[s].push_back(stepNanoseconds(sim, 0.3));
+        times[s].push_back(bench::stepNanoseconds(sim, 0.3));
       }
     }
   }
-  const auto median = [](std::vector<double> v) {
-    if (v.empty()) return -1.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
+  using bench::median;
   for (std::size_t s = 0; s < sizes.size(); ++s) {
     const double d = median(dense_times[s]), r = median(recursive_times[s]);
     if (d > 0) {

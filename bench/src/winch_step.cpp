@@ -11,43 +11,12 @@
 
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
+#include "step_timing.h"
 
-namespace {
-
-double stepNanoseconds(cable_dynamics::CableSimulator& sim, double target_seconds) {
-  long steps = 0;
-  const auto start = std::chrono::steady_clock::now();
-  double elapsed = 0.0;
-  while (elapsed < target_seconds) {
-    for (int i = 0; i < 10; ++i) sim.step();
-    steps += 10;
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  return 1e9 * elapsed / steps;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<int> sizes = {30, 100, 300};
-  if (argc > 1) {
-    sizes.clear();
-    for (std::string list = argv[1]; !list.empty();) {
-      const size_t comma = list.find(',');
-      sizes.push_back(std::stoi(list.substr(0, comma)));
-      list = comma == std::string::npos ? "" : list.substr(comma + 1);
-    }
-  }
-  const char* const config =
-      "cable: {links: 1, length: 50.0, diameter: 0.025, mass_per_length: 0.6}\n"
-      "load: {mass: 10.0, volume: 0.005, drag_area: 0.2}\n"
-      "fluid: {density: 1025.0, drag_normal: 1.2, drag_tangential: 0.01, added_mass: 1.0, current: [1.0, 0.0, 0.0]}\n"
-      "initial: {elevation: 0.3}\n";
+  const std::vector<int> sizes = bench::sizesFrom(argc, argv, {30, 100, 300});
+  const char* const config = bench::fluidCableConfig();
   std::printf("\n6) the winch's cost: the fluid_step cable with n links deployed, RK4, dt = 1 ms: wall time per\n"
               "   step [ns], median of 5 interleaved; a winch with n more slots on the drum, still or paying out\n");
   std::printf("%-6s %12s %12s %12s %10s %10s\n", "n", "no winch", "winch still", "paying out", "still/no", "out/no");
@@ -64,12 +33,12 @@ int main(int argc, char** argv) {
         }
         cable_dynamics::CableSimulator sim(cable_dynamics::loadConfigString(config, overrides));
         for (int i = 0; i < 20; ++i) sim.step();
-        times[s][c].push_back(stepNanoseconds(sim, 0.3));
+        times[s][c].push_back(bench::stepNanoseconds(sim, 0.3));
       }
     }
   }
   for (std::size_t s = 0; s < sizes.size(); ++s) {
-    const double none = median(times[s][0]), still = median(times[s][1]), paying = median(times[s][2]);
+    const double none = bench::median(times[s][0]), still = bench::median(times[s][1]), paying = bench::median(times[s][2]);
     std::printf("%-6d %12.0f %12.0f %12.0f %10.3f %10.3f\n", sizes[s], none, still, paying, still / none, paying / none);
   }
   return 0;
