@@ -117,12 +117,11 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
 
 bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out) {
   if (!solve(x, ends, true)) return false;
-  const int n = links();
+  const int n = links(), first = model_.firstLink();
   const LinkBlocks& l = data_.links;
   out.omega_rate.setZero(3 * n);  // the drum's slots stay at rest
-  for (int k = model_.firstLink(); k < n; ++k) out.omega_rate.segment<3>(3 * k) = l.get(&LinkBlock::omega_rate, k);
+  for (int k = first; k < n; ++k) out.omega_rate.segment<3>(3 * k) = l.get(&LinkBlock::omega_rate, k);
   out.ends.resize(3, n + 1);
-  const int first = model_.firstLink();
   for (int k = 0; k < first; ++k) out.ends.col(k) = l.get(&LinkBlock::base_pos, first);  // the drum's, at the base
   for (int k = first; k < n; ++k) out.ends.col(k) = l.get(&LinkBlock::base_pos, k);
   out.ends.col(n) = data_.tip_position;
@@ -131,7 +130,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   out.tension.setZero();
   for (int k = first; k < n; ++k) out.tension(k) = -data_.joint_force.col(k).dot(l.get(&LinkBlock::u, k));
   out.load_force = data_.load_force;
-  out.base_force = -data_.joint_force.col(model_.firstLink());
+  out.base_force = -data_.joint_force.col(first);
   out.coupling_force = data_.coupling;
   kineticAndPotentialEnergy(model_, data_, out.kinetic_energy, out.potential_energy);
   out.elastic_energy = elasticEnergy(model_, data_, x);

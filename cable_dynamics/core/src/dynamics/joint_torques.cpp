@@ -69,10 +69,11 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
         -p.damping_elevation(k) * (relative - about * direction) - p.damping_torsion(k) * about * direction;
     data.spring_torque.col(k) += bend_torque + twist_torque;
     data.damping_torque.col(k) += damper;
-    if (!inner) data.clamp_torque = bend_torque + twist_torque + damper;
     if (inner) {
       data.spring_torque.col(k - 1) -= bend_torque + twist_torque;
       data.damping_torque.col(k - 1) -= damper;
+    } else {
+      data.clamp_torque = bend_torque + twist_torque + damper;  // the vessel holds the base link with it
     }
   }
 }

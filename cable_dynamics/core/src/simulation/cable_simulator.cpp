@@ -84,8 +84,7 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   problem.clamp_moves = ends.clamp_moves;
   problem.clamp_axis = ends.clamp_axis;
   problem.clamp_twist = ends.clamp_twist;
-  double magnitude = 0.0;
-  dynamics_.mechanicalEnergy(x_, ends, magnitude);  // sets the winch's link to its present length
+  dynamics_.applyEnds(ends);  // the winch's link at its present length
   StaticSolution s = solveStatics(dynamics_.model(), dynamics_.current(), problem, options);
   if (!s.converged) return s;
   const int n = links();
@@ -132,8 +131,8 @@ void CableSimulator::finishWinchStep() {
   Winch& winch = ends_.winch();
   winch.finish(time_);
   const EndInputs before = ends_.at(time_);
-  const double link = params_.winch.link_length;
-  if (before.winch_length <= kWinchLinkSplitAt * link && before.winch_length >= kWinchLinkMergeAt * link) return;
+  // The energy evaluations below only where a link is added or removed.
+  if (winchRegridDue(dynamics_.model(), before.winch_length, params_.winch.link_length) == WinchRegrid::kNone) return;
   double magnitude = 0.0, outboard = ends_.outboardLength();
   const double energy_before = dynamics_.mechanicalEnergy(x_, before, magnitude);
   const WinchRegrid change = regridWinchLinks(dynamics_, x_, before.winch_length, params_.winch.link_length,
@@ -255,7 +254,8 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.q.resize(3 * n);
   out.qd.resize(3 * n);
   dynamics_.paperCoordinates(x_, out.q, out.qd);
-  if (!dynamics_.evaluate(x_, ends_.at(time_), out.chain)) {
+  const EndInputs ends = ends_.at(time_);
+  if (!dynamics_.evaluate(x_, ends, out.chain)) {
     throw std::runtime_error("snapshot: the state at t = " + std::to_string(time_) + " s is not valid");
   }
   out.axes.resize(3, n);
@@ -274,7 +274,6 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.line_pull = out.chain.tension(out.first_link);
   out.vessel_attitude = ends_.baseAttitude(time_);
   out.rov_attitude = ends_.loadAttitude(time_);
-  const EndInputs ends = ends_.at(time_);
   out.vessel_origin = paperToWorld(ends.base_position) - out.vessel_attitude * params_.base.hang_off;
   out.rov_origin = paperToWorld(ends.load_coupled ? ends.target_position : out.chain.ends.col(n)) -
                    out.rov_attitude * params_.load.attachment;

@@ -16,11 +16,18 @@ void stow(Eigen::VectorXd& x, int k) {
 
 }  // namespace
 
+WinchRegrid winchRegridDue(const ChainModel& model, double winch_length, double link_length) {
+  const int first = model.firstLink();
+  if (winch_length > kWinchLinkSplitAt * link_length && first > 0) return WinchRegrid::kAdded;
+  if (winch_length < kWinchLinkMergeAt * link_length && first + 1 < model.links()) return WinchRegrid::kRemoved;
+  return WinchRegrid::kNone;
+}
+
 WinchRegrid regridWinchLinks(ChainDynamics& dynamics, Eigen::VectorXd& x, double winch_length, double link_length,
                              double winch_speed, double& outboard_length) {
-  const ChainModel& model = dynamics.model();
-  const int first = model.firstLink(), n = model.links();
-  if (winch_length > kWinchLinkSplitAt * link_length && first > 0) {
+  const int first = dynamics.model().firstLink();
+  const WinchRegrid due = winchRegridDue(dynamics.model(), winch_length, link_length);
+  if (due == WinchRegrid::kAdded) {
     // The new winch's link (slot first - 1) is the inboard part of the old one: same axis, twist and
     // angular velocity, so every material point keeps its position and velocity.
     const int fresh = first - 1;
@@ -30,7 +37,7 @@ WinchRegrid regridWinchLinks(ChainDynamics& dynamics, Eigen::VectorXd& x, double
     outboard_length += dynamics.model().properties().length(first);
     return WinchRegrid::kAdded;
   }
-  if (winch_length < kWinchLinkMergeAt * link_length && first + 1 < n) {
+  if (due == WinchRegrid::kRemoved) {
     const int next = first + 1;
     const double a = winch_length, b = dynamics.model().properties().length(next), total = a + b;
     const Eigen::Vector3d u_a = x.segment<3>(StateLayout::axis(first)).normalized();

@@ -47,6 +47,9 @@ class ChainDynamics {
   int links() const { return model_.links(); }
   /// The winch deploys slots [first, n) (ChainModel::deploy); between evaluations only.
   void deploy(int first) { model_.deploy(first); }
+  /// What the ends set in the model and the data before any pass: the winch's link length, the clamp.
+  /// Every evaluation calls it; the statics call it to see the model as the ends have it now.
+  void applyEnds(const EndInputs& ends);
   int stateSize() const { return StateLayout::size(model_.links()); }
   const ChainModel& model() const { return model_; }
   const LinkProperties& properties() const { return model_.properties(); }
@@ -87,8 +90,6 @@ class ChainDynamics {
   void stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const;
 
  private:
-  /// What the ends set in the model and the data before any pass: the winch's link length, the clamp.
-  void applyEnds(const EndInputs& ends);
   /// The passes up to the accelerations (and all joint forces or only joint 0's).
   bool solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces);
   void writeRates(Eigen::VectorXd& xdot) const;  ///< x' from the solved state, after solve()

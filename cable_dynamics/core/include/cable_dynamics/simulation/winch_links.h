@@ -16,8 +16,11 @@ namespace cable_dynamics {
 constexpr double kWinchLinkSplitAt = 2.25;
 constexpr double kWinchLinkMergeAt = 1.0;
 
-/// What changed at the winch after one step.
+/// What a regrid would do now: add a link (the winch's link longer than kWinchLinkSplitAt links and a
+/// slot left on the drum), remove one (shorter than kWinchLinkMergeAt and a link beyond it to merge
+/// into), or nothing.
 enum class WinchRegrid { kNone, kAdded, kRemoved };
+WinchRegrid winchRegridDue(const ChainModel& model, double winch_length, double link_length);
 
 /// After an accepted step, with `winch_length` [m] the winch's link's length now and `link_length`
 /// [m] the configured length of a link added at the winch: splits the winch's link (a new slot in
