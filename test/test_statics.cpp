@@ -36,14 +36,10 @@ StaticSolution solve(ChainDynamics& chain, const StaticProblem& problem, const c
   return s;
 }
 
-/// The state of the solved shape at rest.
+/// The state of a solved shape at rest, the accumulators zero.
 Eigen::VectorXd restState(const StaticSolution& s) {
-  const int n = static_cast<int>(s.twists.size());
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(StateLayout::size(n));
-  for (int k = 0; k < n; ++k) {
-    x.segment<3>(StateLayout::axis(k)) = s.axes.col(k);
-    x(StateLayout::twist(k)) = s.twists(k);
-  }
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(StateLayout::size(static_cast<int>(s.twists.size())));
+  setRestState(s, x);
   return x;
 }
 

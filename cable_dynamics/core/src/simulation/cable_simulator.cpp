@@ -88,11 +88,7 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   StaticSolution s = solveStatics(dynamics_.model(), dynamics_.current(), problem, options);
   if (!s.converged) return s;
   const int n = links();
-  for (int k = 0; k < n; ++k) {
-    x_.segment<3>(StateLayout::axis(k)) = s.axes.col(k);
-    x_(StateLayout::twist(k)) = s.twists(k);
-    x_.segment<3>(StateLayout::omega(k)).setZero();
-  }
+  setRestState(s, x_);
   x_(StateLayout::dissipated(n)) = 0.0;
   x_(StateLayout::workInput(n)) = 0.0;
   // Azimuths continue from the solved axes (nearest branch to the old ones); a new start for the

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "cable_dynamics/dynamics/joint_geometry.h"
+#include "cable_dynamics/dynamics/state_layout.h"
 #include "static_equations.h"
 #include "static_newton.h"
 #include "static_start.h"
@@ -141,6 +142,14 @@ StaticSolution solveStatics(const ChainModel& model, const CurrentField& current
   out.message = ok ? "" : why;
   writeSolution(model, eq, s, out);
   return out;
+}
+
+void setRestState(const StaticSolution& solution, Eigen::VectorXd& x) {
+  for (int k = 0; k < static_cast<int>(solution.twists.size()); ++k) {
+    x.segment<3>(StateLayout::axis(k)) = solution.axes.col(k);
+    x(StateLayout::twist(k)) = solution.twists(k);
+    x.segment<3>(StateLayout::omega(k)).setZero();
+  }
 }
 
 }  // namespace cable_dynamics

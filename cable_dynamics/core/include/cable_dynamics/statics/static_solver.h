@@ -75,4 +75,8 @@ struct StaticSolution {
 StaticSolution solveStatics(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
                             const StaticOptions& options = {});
 
+/// The solved shape at rest into the state x (dynamics/state_layout.h, already of its size): every
+/// link's axis and twist, zero angular velocities; the energy accumulators are left as they are.
+void setRestState(const StaticSolution& solution, Eigen::VectorXd& x);
+
 }  // namespace cable_dynamics
