@@ -8,6 +8,7 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/params/cable_params.cpp
   ${CABLE_CORE_DIR}/src/params/config_section.cpp
   ${CABLE_CORE_DIR}/src/params/config_loader.cpp
+  ${CABLE_CORE_DIR}/src/params/seabed_config.cpp
   ${CABLE_CORE_DIR}/src/params/states.cpp
   # dynamics: the paper's model, the joint springs, the fluid, the chain's equations of motion (the
   # model/data split, then one file per pass, then the facade that runs them in order)
@@ -19,6 +20,8 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/dynamics/chain_data.cpp
   ${CABLE_CORE_DIR}/src/dynamics/paper_coordinates.cpp
   ${CABLE_CORE_DIR}/src/dynamics/kinematics.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/seabed.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/seabed_contact.cpp
   ${CABLE_CORE_DIR}/src/dynamics/external_loads.cpp
   ${CABLE_CORE_DIR}/src/dynamics/joint_torques.cpp
   ${CABLE_CORE_DIR}/src/dynamics/energies.cpp

@@ -1,5 +1,6 @@
 #include "cable_dynamics/tools/cable_sim_app.h"
 
+#include <algorithm>
 #include <unistd.h>
 
 #include <chrono>
@@ -90,7 +91,7 @@ int writeStatics(CableSimulator& sim, const CableParams& params, const std::stri
   }
   SimulationSnapshot snapshot;
   sim.snapshot(snapshot);
-  writeCsvHeader(csv, params.links);
+  writeCsvHeader(csv, params.links, params.seabed.enabled);
   if (!writeCsvRow(csv, snapshot)) {
     err << "cable_sim: the static equilibrium has a non-finite value\n";
     return 3;
@@ -149,7 +150,7 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
     err << "cable_sim: cannot write " << o.output << "\n";
     return 4;
   }
-  writeCsvHeader(csv, params.links);
+  writeCsvHeader(csv, params.links, params.seabed.enabled);
   SimulationSnapshot snapshot;
   sim.snapshot(snapshot);
   writeCsvRow(csv, snapshot);
@@ -159,6 +160,9 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   ProgressBar progress(err, duration);
   long retried = 0;
   int status = 0;
+  // Samples in which something sank into the seabed deeper than seabed.penetration allows.
+  long sunk = 0;
+  double deepest = snapshot.chain.seabed.max_penetration;
   for (long i = 1; i <= steps; ++i) {
     const StepReport report = sim.step();
     if (!report.ok) {
@@ -170,6 +174,8 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
     if (report.substeps > 1) ++retried;
     if (i % every == 0 || i == steps) {
       sim.snapshot(snapshot);
+      deepest = std::max(deepest, snapshot.chain.seabed.max_penetration);
+      if (params.seabed.enabled && snapshot.chain.seabed.max_penetration > params.seabed.penetration) ++sunk;
       if (!writeCsvRow(csv, snapshot)) {
         err << "cable_sim: non-finite output at t = " << sim.time() << " s; stopped\n";
         status = 3;
@@ -194,6 +200,14 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   if (status == 0 && sim.energyDrift() > kMaxEnergyDrift) {
     err << "cable_sim: the energy balance drifted by " << sim.energyDrift() << " of its scale (more than "
         << kMaxEnergyDrift << "): the result is not reliable at dt = " << sim.dt() << " s\n";
+    status = 5;
+  }
+  if (params.seabed.enabled) {
+    err << "cable_sim: deepest penetration into the seabed " << deepest << " m (allowed " << params.seabed.penetration << " m)\n";
+  }
+  if (status == 0 && sunk > 0) {
+    err << "cable_sim: in " << sunk << " samples the cable or the load sank deeper into the seabed than seabed.penetration = "
+        << params.seabed.penetration << " m (deepest " << deepest << " m): raise seabed.stiffness or the penetration\n";
     status = 5;
   }
   err << "cable_sim: wrote " << o.output << " (t = 0 to " << sim.time() << " s)\n";

@@ -31,12 +31,19 @@ std::vector<double> rowValues(const SimulationSnapshot& s) {
   v.push_back(s.deployed_length);
   v.push_back(s.winch_speed);
   v.push_back(static_cast<double>(n - s.first_link));
+  // The seabed (zeros without one; touchdown_arc_length -1 while nothing touches), paper frame as the ends.
+  const SeabedReport& bed = s.chain.seabed;
+  for (double x : {s.chain.contact_energy, bed.grounded_length, bed.touching ? bed.touchdown_arc_length : -1.0,
+                   bed.touchdown.x(), bed.touchdown.y(), bed.touchdown.z(), bed.max_penetration}) {
+    v.push_back(x);
+  }
+  for (int k = 0; k < bed.normal_force.size(); ++k) v.push_back(bed.normal_force(k));
   return v;
 }
 
 }  // namespace
 
-std::vector<std::string> csvColumns(int links) {
+std::vector<std::string> csvColumns(int links, bool seabed) {
   std::vector<std::string> c{"time"};
   for (int i = 0; i < 3 * links; ++i) c.push_back(coordinateName(i));
   for (int i = 0; i < 3 * links; ++i) c.push_back(coordinateName(i) + "_rate");
@@ -47,14 +54,18 @@ std::vector<std::string> csvColumns(int links) {
   for (const char* name : {"top_tension", "load_force_x", "load_force_y", "load_force_z", "base_force_x",
                            "base_force_y", "base_force_z", "kinetic_energy", "potential_energy", "elastic_energy",
                            "dissipated_energy", "work_input", "total_energy", "base_x", "base_y", "base_z",
-                           "deployed_length", "winch_speed", "deployed_links"}) {
+                           "deployed_length", "winch_speed", "deployed_links", "contact_energy", "grounded_length",
+                           "touchdown_arc_length", "touchdown_x", "touchdown_y", "touchdown_z", "max_penetration"}) {
     c.push_back(name);
+  }
+  if (seabed) {
+    for (int k = 1; k <= links; ++k) c.push_back("seabed_normal" + std::to_string(k));
   }
   return c;
 }
 
-void writeCsvHeader(std::ostream& out, int links) {
-  const std::vector<std::string> columns = csvColumns(links);
+void writeCsvHeader(std::ostream& out, int links, bool seabed) {
+  const std::vector<std::string> columns = csvColumns(links, seabed);
   for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
   out << "\n";
 }

@@ -111,7 +111,8 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
     xdot(StateLayout::twist(k)) = block.twist_rate[i];
     xdot.segment<3>(StateLayout::omega(k)) << block.omega_rate.x[i], block.omega_rate.y[i], block.omega_rate.z[i];
   }
-  xdot(StateLayout::dissipated(n)) = -(data_.drag_power + data_.added_mass_power + damperPower(model_, data_));
+  xdot(StateLayout::dissipated(n)) =
+      data_.contact_dissipation - (data_.drag_power + data_.added_mass_power + damperPower(model_, data_));
   xdot(StateLayout::workInput(n)) = data_.input_power;
 }
 
@@ -134,6 +135,11 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   out.coupling_force = data_.coupling;
   kineticAndPotentialEnergy(model_, data_, out.kinetic_energy, out.potential_energy);
   out.elastic_energy = elasticEnergy(model_, data_, x);
+  out.contact_energy = 0.0;
+  if (model_.seabedContact().enabled()) {
+    reportSeabedContact(model_, data_, out.seabed);
+    out.contact_energy = out.seabed.energy;
+  }
   return true;
 }
 
@@ -147,8 +153,9 @@ double ChainDynamics::solvedMechanicalEnergy(const Eigen::VectorXd& x, double& m
   double kinetic = 0.0, potential = 0.0;
   kineticAndPotentialEnergy(model_, data_, kinetic, potential);
   const double elastic = elasticEnergy(model_, data_, x);
-  magnitude = std::abs(kinetic) + std::abs(potential) + std::abs(elastic);
-  return kinetic + potential + elastic;
+  const double contact = seabedContactEnergy(model_, data_);
+  magnitude = std::abs(kinetic) + std::abs(potential) + std::abs(elastic) + contact;
+  return kinetic + potential + elastic + contact;
 }
 
 void ChainDynamics::generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, bool with_dampers,

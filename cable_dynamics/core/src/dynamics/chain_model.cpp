@@ -10,6 +10,7 @@ ChainModel::ChainModel(const CableParams& params)
       formulation_(params.simulation.formulation),
       fluid_density_(params.fluid.density),
       drag_(params.fluid),
+      seabed_(makeSeabedContact(params, nominal_)),
       points_(params.links),
       attachment_begin_(params.links + 1, 0),
       lanes_((params.links + kBlockLanes - 1) / kBlockLanes) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cable_dynamics/dynamics/hot_path.h"
+#include "cable_dynamics/dynamics/seabed_contact.h"
 
 namespace cable_dynamics {
 
@@ -73,6 +74,8 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
                     load.coupling_damping * (data.tip_velocity - ends.target_velocity);
     data.load_external += data.coupling;
   }
+  data.contact_dissipation = 0.0;
+  if (model.seabedContact().enabled()) addSeabedContact(model, data);  // after the coupling: it adds to load_external
 }
 
 }  // namespace cable_dynamics

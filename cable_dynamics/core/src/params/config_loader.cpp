@@ -6,6 +6,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "seabed_config.h"
+
 namespace cable_dynamics {
 namespace {
 
@@ -301,7 +303,7 @@ void parseWinch(Section winch, CableParams& p) {
 
 }  // namespace
 
-CableParams parseConfig(const YAML::Node& root) {
+CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   Section top(root, "");
   CableParams p;
   if (!top.has("cable")) throw ConfigError("cable", "(missing)", "a mapping with links, length, diameter, ...");
@@ -326,6 +328,7 @@ CableParams parseConfig(const YAML::Node& root) {
   p.gravity = top.number("gravity", 9.81, 0.0, 100.0, false, "m/s^2");
   if (cable_rest.has_sections) parseSections(cable_rest.sections, cable_rest, p);
   if (top.has("attachments")) parseAttachments(top.raw("attachments"), p);
+  if (top.has("seabed")) parseSeabed(top.sub("seabed"), base_dir, p);
 
   Section initial = top.sub("initial");
   p.initial.mode = initial.choice("mode", "angles", {"angles", "equilibrium"}) == "angles" ? InitialMode::kAngles
@@ -389,10 +392,10 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
 }
 
 namespace {
-CableParams parseWithOverrides(YAML::Node root, const std::vector<std::string>& overrides) {
+CableParams parseWithOverrides(YAML::Node root, const std::vector<std::string>& overrides, const std::string& base_dir) {
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   for (const auto& o : overrides) applyOverride(root, o);
-  return parseConfig(root);
+  return parseConfig(root, base_dir);
 }
 }  // namespace
 
@@ -403,7 +406,8 @@ CableParams loadConfigFile(const std::string& path, const std::vector<std::strin
   } catch (const YAML::Exception& e) {
     throw ConfigError("(file)", path, std::string("a readable YAML file: ") + e.what());
   }
-  return parseWithOverrides(root, overrides);
+  const std::size_t slash = path.find_last_of('/');
+  return parseWithOverrides(root, overrides, slash == std::string::npos ? "" : path.substr(0, slash));
 }
 
 CableParams loadConfigString(const std::string& yaml_text, const std::vector<std::string>& overrides) {
@@ -413,7 +417,7 @@ CableParams loadConfigString(const std::string& yaml_text, const std::vector<std
   } catch (const YAML::Exception& e) {
     throw ConfigError("(text)", "", std::string("valid YAML: ") + e.what());
   }
-  return parseWithOverrides(root, overrides);
+  return parseWithOverrides(root, overrides, "");
 }
 
 }  // namespace cable_dynamics

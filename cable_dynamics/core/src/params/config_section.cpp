@@ -147,6 +147,7 @@ std::vector<double> ConfigSection::perJoint(const std::string& key, int count, d
 
 std::vector<double> ConfigSection::numberList(const std::string& key, int count, double lo, double hi, bool lo_open,
                                               const char* unit) {
+  known_.insert(key);
   const std::string name = full(key);
   const YAML::Node v = at(key);
   if (!v.IsSequence() || static_cast<int>(v.size()) != count) {

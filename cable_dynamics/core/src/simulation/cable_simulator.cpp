@@ -262,7 +262,7 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   }
   out.dissipated_energy = x_(StateLayout::dissipated(n));
   out.work_input = x_(StateLayout::workInput(n));
-  out.total_energy = out.chain.kinetic_energy + out.chain.potential_energy + out.chain.elastic_energy +
+  out.total_energy = out.chain.kinetic_energy + out.chain.potential_energy + out.chain.elastic_energy + out.chain.contact_energy +
                      out.dissipated_energy - out.work_input;
   out.first_link = firstLink();
   out.deployed_length = deployedLength();

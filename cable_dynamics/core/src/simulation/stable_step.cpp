@@ -4,6 +4,7 @@
 #include <limits>
 #include <sstream>
 
+#include "cable_dynamics/dynamics/seabed_contact.h"
 #include "cable_dynamics/params/config_section.h"
 
 namespace cable_dynamics {
@@ -66,6 +67,24 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
     const double tip_mass = p.load_mass + params.load.added_mass + 0.5 * (p.mass(n - 1) + p.added_mass_per_length(n - 1) * l);
     stiffest.consider(std::sqrt(params.load.coupling_stiffness / tip_mass), "the load coupling's stiffness");
     stiffest.consider(params.load.coupling_damping / tip_mass, "the load coupling's damping");
+  }
+  if (params.seabed.enabled) {
+    // The seabed's normal spring-damper on each link's mass per length, |lambda| = omega (zeta <= 1) or
+    // omega (zeta + sqrt(zeta^2 - 1)); and the friction's viscous regime below the regularization speed,
+    // mu w' / v_reg per unit mass, with w' the weight per length that presses the link down (its own).
+    const SeabedContactConstants c = makeSeabedContact(params, p);
+    const double zeta = params.seabed.damping_ratio, reach = zeta <= 1.0 ? 1.0 : zeta + std::sqrt(zeta * zeta - 1.0);
+    for (int k = 0; k < n; ++k) {
+      const double l = p.length(k);
+      if (l <= 0.0) continue;
+      const std::string link = std::to_string(k + 1);
+      const double mass = p.mass(k) / l, across = mass + p.added_mass_per_length(k);
+      stiffest.consider(reach * std::sqrt(c.stiffness / across), "the seabed's normal spring under link " + link);
+      const double pressing = std::max(p.gravity * p.submerged_mass(k) / l, 0.0);
+      stiffest.consider(c.friction_axial * pressing / (c.friction_velocity * mass), "the seabed's axial friction on link " + link);
+      stiffest.consider(c.friction_lateral * pressing / (c.friction_velocity * across),
+                        "the seabed's lateral friction on link " + link);
+    }
   }
   StableStep s;
   s.rate = stiffest.rate;

@@ -40,6 +40,7 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
   const double l = length_(i);
   force = Eigen::Vector3d(0.0, 0.0, weight_(i));
   moment = Eigen::Vector3d(0.0, 0.0, weight_moment_(i));
+  addSeabedContact(i, u, p, force, moment);
   if (!in_water_) return;
   // The same quadrature as the dynamics, at zero velocity: the relative velocity is the current alone.
   Eigen::Vector3d drag_force, drag_moment;
@@ -58,9 +59,48 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
   }
 }
 
+void StaticEquations::addSeabedContact(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,
+                                       Eigen::Vector3d& moment) const {
+  const SeabedContactConstants& c = model_.seabedContact();
+  if (!c.enabled() || contact_scale_ == 0.0) return;
+  // The contact points of seabed_contact.cpp at rest: the springs alone (the dampers and the
+  // friction act on velocities; a friction that holds a cable at rest is not a static unknown here).
+  const int k = first_ + i;
+  const double l = length_(i), share = l / c.points;
+  for (int j = 0; j < c.points; ++j) {
+    const double s = c.node[j] * l;
+    PointContact contact;
+    if (pointContact(c, share, contact_scale_ * c.stiffness, c.damping[k], c.rest_penetration, toVec3(p + s * u),
+                     {0.0, 0.0, 0.0}, toVec3(u), contact)) {
+      force += toEigen(contact.force);
+      moment += s * toEigen(contact.force);
+    }
+  }
+}
+
+bool StaticEquations::touchesSeabed(const StaticState& s) const {
+  const SeabedContactConstants& c = model_.seabedContact();
+  if (!c.enabled()) return false;
+  for (int i = 0; i < m_; ++i) {
+    for (int j = 0; j < c.points; ++j) {
+      const Eigen::Vector3d p = s.base.col(i) + (c.node[j] * length_(i)) * s.axis.col(i);
+      if (Seabed::penetration(c.bed.probe(p.x(), p.y()), p.z()) > 0.0) return true;
+    }
+  }
+  const Eigen::Vector3d t = tip(s);
+  return c.load_contact && Seabed::penetration(c.bed.probe(t.x(), t.y()), t.z()) > 0.0;
+}
+
 Eigen::Vector3d StaticEquations::loadForceFree(const Eigen::Vector3d& tip) const {
   const LoadConstants& load = model_.load();
   Eigen::Vector3d f(0.0, 0.0, load.weight);
+  const SeabedContactConstants& c = model_.seabedContact();
+  PointContact contact;
+  if (c.load_contact && contact_scale_ > 0.0 &&
+      pointContact(c, 1.0, contact_scale_ * c.load_stiffness, c.load_damping, c.load_rest, toVec3(tip), {0.0, 0.0, 0.0},
+                   {0.0, 0.0, 0.0}, contact)) {
+    f += toEigen(contact.force);
+  }
   if (in_water_ && load.drag_area > 0.0) {
     const Eigen::Vector3d c = current_.at(tip.z());  // [m/s]
     f += 0.5 * model_.fluidDensity() * load.drag_area * c.norm() * c;

@@ -45,12 +45,18 @@ class StaticEquations {
 
   /// Multiplies every bend spring (continuation on the stiffness; 1 = the model's).
   void setStiffnessScale(double scale) { stiffness_scale_ = scale; }
+  /// Multiplies the seabed's contact springs (continuation from a cable hanging through the bed; 1 = the
+  /// model's, 0 = no seabed).
+  void setContactScale(double scale) { contact_scale_ = scale; }
+  bool hasSeabed() const { return model_.seabedContact().enabled(); }
+  /// true when some contact point of the deployed links or the load is in the bed at s.
+  bool touchesSeabed(const StaticState& s) const;
 
   /// Weight and drag at rest on deployed link i with axis u and base end p: force F [N] and its first
   /// moment about the base end N [N m], as computeExternalLoads applies them at zero velocity.
   void linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,
                  Eigen::Vector3d& moment) const;
-  /// The load's weight and drag at rest at tip position `tip` [m] (no coupling) [N].
+  /// The load's weight, drag and seabed contact at rest at tip position `tip` [m] (no coupling) [N].
   Eigen::Vector3d loadForceFree(const Eigen::Vector3d& tip) const;
   /// The coupling spring's force on the load at `tip` [N] (zero when the tip is free).
   Eigen::Vector3d couplingForce(const Eigen::Vector3d& tip) const;
@@ -71,6 +77,14 @@ class StaticEquations {
 
   void residual(const StaticState& s, int i, LinkResidual& r) const;
 
+ private:
+  /// The seabed's springs on deployed link i at rest (seabed_contact.cpp's points), added to its force
+  /// and first moment.
+  void addSeabedContact(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,
+                        Eigen::Vector3d& moment) const;
+
+ public:
+
   /// F, the sum of the magnitudes of every external force at s [N] (static_solver.h), at least 1e-9 N.
   double forceScale(const StaticState& s) const;
 
@@ -86,6 +100,7 @@ class StaticEquations {
   bool has_bend_, in_water_;
   double coupling_stiffness_;       ///< [N/m], 0 when the tip is free
   double stiffness_scale_ = 1.0;
+  double contact_scale_ = 1.0;
   Eigen::Vector3d clamp_axis_;
 };
 

@@ -47,14 +47,15 @@ bool limpStart(const StaticEquations& eq, StaticState& s, std::string& why) {
   return true;
 }
 
-/// Newton with the springs ramped up from a tenth of a percent, each step's solution the next one's
-/// start, a step that fails retried at the geometric mean.
-bool continuation(StaticEquations& eq, StaticNewton& newton, StaticState& s, const StaticOptions& options,
-                  int& iterations, double& residual, std::string& why) {
+/// Newton with a scale ramped up from `first` to 1 (the bend springs' or the seabed's: `set_scale`),
+/// each step's solution the next one's start, a step that fails retried at the geometric mean.
+template <typename SetScale>
+bool continuation(SetScale set_scale, double first, const char* what, StaticNewton& newton, StaticState& s,
+                  const StaticOptions& options, int& iterations, double& residual, std::string& why) {
   StaticState saved = s;
-  double done = 0.0, next = 1e-3;
+  double done = 0.0, next = first;
   for (int attempt = 0; attempt < 60; ++attempt) {
-    eq.setStiffnessScale(next);
+    set_scale(next);
     int taken = 0;
     const bool ok = newton.solve(s, options.tolerance, options.max_iterations, taken, residual, why);
     iterations += taken;
@@ -69,8 +70,8 @@ bool continuation(StaticEquations& eq, StaticNewton& newton, StaticState& s, con
       if (next <= done * 1.0001) break;
     }
   }
-  eq.setStiffnessScale(1.0);
-  why = "the stiffness continuation stalled: " + why;
+  set_scale(1.0);
+  why = std::string("the ") + what + " continuation stalled: " + why;
   return false;
 }
 
@@ -98,6 +99,38 @@ void writeSolution(const ChainModel& model, const StaticEquations& eq, const Sta
   out.tip_position = eq.tip(s);
 }
 
+/// Without the seabed's contact (the scale eq has): the limp or spring-loaded problem.
+bool solveWithoutContact(StaticEquations& eq, StaticNewton& newton, StaticState& s, const StaticOptions& options,
+                         StaticSolution& out, std::string& why) {
+  int taken = 0;
+  bool ok = false;
+  if (!eq.hasBendSprings()) {
+    // Limp: the sweep is the answer up to the drag's fixed points and a profile's depths; Newton polishes.
+    std::string start_why;
+    const bool started = limpStart(eq, s, start_why);
+    ok = newton.solve(s, options.tolerance, options.max_iterations, taken, out.residual, why);
+    out.iterations += taken;
+    if (!ok && !started) why += " (from a poor start: " + start_why + ")";
+  } else {
+    // Springs: a free tip starts straight along the clamp (the small-deflection answer's neighbour), a
+    // coupled one from the limp chain that meets the target; if Newton stalls there, ramp the springs up.
+    if (eq.problem().tip_coupled) {
+      limpStart(eq, s, why);
+    } else {
+      statics::straightStart(eq, eq.clampAxis(), s);
+    }
+    ok = newton.solve(s, options.tolerance, options.max_iterations, taken, out.residual, why);
+    out.iterations += taken;
+    if (!ok) {
+      eq.setStiffnessScale(0.0);
+      limpStart(eq, s, why);
+      ok = continuation([&eq](double scale) { eq.setStiffnessScale(scale); }, 1e-3, "stiffness", newton, s, options,
+                        out.iterations, out.residual, why);
+    }
+  }
+  return ok;
+}
+
 }  // namespace
 
 StaticSolution solveStatics(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
@@ -113,29 +146,15 @@ StaticSolution solveStatics(const ChainModel& model, const CurrentField& current
   s.resize(eq.links());
   StaticNewton newton(eq);
   std::string why;
-  int taken = 0;
-  bool ok = false;
-  if (!eq.hasBendSprings()) {
-    // Limp: the sweep is the answer up to the drag's fixed points and a profile's depths; Newton polishes.
-    std::string start_why;
-    const bool started = limpStart(eq, s, start_why);
-    ok = newton.solve(s, options.tolerance, options.max_iterations, taken, out.residual, why);
-    out.iterations = taken;
-    if (!ok && !started) why += " (from a poor start: " + start_why + ")";
-  } else {
-    // Springs: a free tip starts straight along the clamp (the small-deflection answer's neighbour), a
-    // coupled one from the limp chain that meets the target; if Newton stalls there, ramp the springs up.
-    if (problem.tip_coupled) {
-      limpStart(eq, s, why);
-    } else {
-      statics::straightStart(eq, eq.clampAxis(), s);
-    }
-    ok = newton.solve(s, options.tolerance, options.max_iterations, taken, out.residual, why);
-    out.iterations += taken;
-    if (!ok) {
-      eq.setStiffnessScale(0.0);
-      limpStart(eq, s, why);
-      ok = continuation(eq, newton, s, options, out.iterations, out.residual, why);
+  // With a seabed: first the cable as if the bed were not there; where it hangs through the bed, the
+  // bed's springs are ramped up from 1e-4 of their stiffness, lifting it out step by step.
+  if (eq.hasSeabed()) eq.setContactScale(0.0);
+  bool ok = solveWithoutContact(eq, newton, s, options, out, why);
+  if (ok && eq.hasSeabed()) {
+    eq.setContactScale(1.0);
+    if (eq.touchesSeabed(s)) {
+      ok = continuation([&eq](double scale) { eq.setContactScale(scale); }, 1e-4, "seabed contact", newton, s, options,
+                        out.iterations, out.residual, why);
     }
   }
   out.converged = ok;

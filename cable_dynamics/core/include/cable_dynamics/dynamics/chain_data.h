@@ -67,6 +67,7 @@ struct ChainData {
 
   // Powers [W]: of the drag, of the added-mass force, of the moving base and the coupling.
   double drag_power = 0.0, added_mass_power = 0.0, input_power = 0.0;
+  double contact_dissipation = 0.0;  ///< power the seabed's dampers and friction take out, >= 0 [W]
 
   // The paper springs' scratch: paper coordinates, rates (3n) [rad, rad/s], absolute azimuths (n) [rad].
   Eigen::VectorXd paper_q, paper_qd, paper_psi;

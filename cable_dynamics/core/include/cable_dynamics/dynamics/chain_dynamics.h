@@ -37,6 +37,8 @@ struct ChainOutputs {
   double kinetic_energy = 0.0;    ///< cable and load, without the fluid's added mass [J]
   double potential_energy = 0.0;  ///< gravity minus buoyancy, zero at the base's rest height [J]
   double elastic_energy = 0.0;    ///< joint springs [J]
+  double contact_energy = 0.0;    ///< the seabed's contact springs [J]
+  SeabedReport seabed;            ///< contact forces, grounded length, touchdown (with a seabed)
 };
 
 /// The model of one cable and the workspace its evaluations write.
@@ -70,8 +72,8 @@ class ChainDynamics {
   /// Accelerations, forces along the cable and energies at x. Returns false like derivative().
   bool evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out);
 
-  /// Kinetic + potential + elastic energy at x [J] without solving for the accelerations (O(n)).
-  /// `magnitude` gets the sum of the three terms' absolute values [J].
+  /// Kinetic + potential + elastic + seabed contact energy at x [J] without solving for the
+  /// accelerations (O(n)). `magnitude` gets the sum of the terms' absolute values [J].
   double mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude);
   /// mechanicalEnergy() of the state x that the last derivative() or evaluate() call was given, from
   /// the kinematics that call left (no second pass over the chain).

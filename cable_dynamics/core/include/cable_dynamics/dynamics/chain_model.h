@@ -9,6 +9,7 @@
 
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/link_block.h"
+#include "cable_dynamics/dynamics/seabed_contact.h"
 #include "cable_dynamics/params/cable_params.h"
 
 namespace cable_dynamics {
@@ -68,6 +69,8 @@ class ChainModel {
   /// true when some attachment has drag (the drag pass then visits them).
   bool attachmentDrag() const { return attachment_drag_; }
   const LoadConstants& load() const { return load_; }
+  /// The seabed and its contact's constants (disabled when the config has no seabed).
+  const SeabedContactConstants& seabedContact() const { return seabed_; }
   bool hasWinch() const { return has_winch_; }
 
   /// Per-link constants, eight links a block; lanes past the last link hold a massless link of zero length.
@@ -91,6 +94,7 @@ class ChainModel {
   double fluid_density_;
   LinkDrag drag_;
   LoadConstants load_;
+  SeabedContactConstants seabed_;
   /// Per slot, the sums over its attachments: structure (m, m s, m s^2), added mass (the same moments),
   /// submerged mass (m_s, m_s s).
   struct PointSums {

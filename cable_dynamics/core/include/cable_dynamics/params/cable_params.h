@@ -197,6 +197,36 @@ struct AttachmentParams {
   double added_mass = 0.0;  ///< isotropic added mass [kg]
 };
 
+/// Bathymetry on a regular grid (`seabed.grid` or `seabed.grid_file`): the seabed's depth below the
+/// base's rest position [m] (positive down) at world (x0 + i dx, y0 + j dy), bilinear in between and
+/// constant beyond the grid's edges.
+struct SeabedGrid {
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();   ///< world x, y of depth(0, 0) [m]
+  Eigen::Vector2d spacing = Eigen::Vector2d::Ones();  ///< dx, dy > 0 [m]
+  Eigen::MatrixXd depth;  ///< (rows = y points, cols = x points, at least 2 x 2) [m]
+};
+
+/// The seabed (docs/MODEL.md section 10): a flat bottom at `depth`, or bathymetry on a grid; a normal
+/// spring-damper per unit length at points along each link, and regularized Coulomb friction.
+struct SeabedParams {
+  bool enabled = false;
+  double depth = 0.0;  ///< flat seabed: depth below the base's rest position [m] (world z = -depth)
+  bool has_grid = false;
+  SeabedGrid grid;     ///< replaces `depth` when has_grid
+  /// Allowed penetration [m]: the default stiffness lets the heaviest section rest at 1 % of it,
+  /// leaving the rest for dynamics (landing, a tension pulling the cable down). Default: half the
+  /// largest diameter.
+  double penetration = 0.0;
+  /// Normal stiffness per unit length [N/m^2]; 0 = 100 w'_max / penetration, w'_max the heaviest
+  /// submerged weight per length of the cable's sections [N/m].
+  double stiffness = 0.0;
+  double damping_ratio = 0.5;      ///< of each link's normal mode on the spring, m' + m_a' per length [-]
+  double friction_axial = 0.0;     ///< Coulomb coefficient along the cable [-]
+  double friction_lateral = 0.0;   ///< across it [-]
+  double friction_velocity = 0.01; ///< regularization: viscous below this slip speed [m/s]
+  int contact_points = 4;          ///< points per link at which the contact is evaluated (midpoint rule)
+};
+
 /// Every parameter of one cable, validated by the config loader; SI units.
 struct CableParams {
   /// n, number of rigid links; with a winch, every slot the longest deployment needs (the first
@@ -217,6 +247,7 @@ struct CableParams {
   BaseParams base;
   FluidParams fluid;
   double gravity = 9.81;                  ///< [m/s^2]
+  SeabedParams seabed;
   InitialState initial;
   SimulationParams simulation;
 

@@ -12,8 +12,9 @@
 
 namespace cable_dynamics {
 
-/// Parses and validates a config tree. Throws ConfigError on a bad, missing or unknown key.
-CableParams parseConfig(const YAML::Node& root);
+/// Parses and validates a config tree. Throws ConfigError on a bad, missing or unknown key. A relative
+/// file name in it (seabed.grid_file) is read from `base_dir` (the working directory when empty).
+CableParams parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 
 /// Applies `key.path=value` (value in YAML syntax, e.g. `cable.links=10` or `fluid.current=[1,0,0]`)
 /// to the tree before it is parsed. Throws ConfigError when the override is malformed.

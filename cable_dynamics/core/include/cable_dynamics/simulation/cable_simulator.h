@@ -27,9 +27,10 @@ struct SimulationSnapshot {
   ChainOutputs chain;      ///< ends, tension, forces, energies
   Eigen::Matrix3Xd axes;   ///< (3 x n) unit axis of each link, base end to far end [-]
   Eigen::VectorXd twists;  ///< (n) each link's total twist about the vertical, sigma = psi + phi [rad]
-  double dissipated_energy = 0.0;  ///< taken out by drag, added mass and dampers since reset [J]
+  double dissipated_energy = 0.0;  ///< taken out by drag, added mass, dampers and the seabed since reset [J]
   double work_input = 0.0;         ///< done on the cable by the moving base and the load coupling [J]
-  /// kinetic + potential + elastic + dissipated - work input: constant up to the integrator's error [J]
+  /// kinetic + potential + elastic + seabed contact + dissipated - work input: constant up to the
+  /// integrator's error [J]
   double total_energy = 0.0;
   // The winch (zero and the configured length without one).
   int first_link = 0;            ///< the base link's slot: slots before it are on the drum

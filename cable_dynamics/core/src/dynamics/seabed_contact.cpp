@@ -1,0 +1,223 @@
+#include "cable_dynamics/dynamics/seabed_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "cable_dynamics/dynamics/chain_data.h"
+#include "cable_dynamics/dynamics/chain_model.h"
+#include "cable_dynamics/dynamics/hot_path.h"
+
+namespace cable_dynamics {
+namespace {
+
+/// The default stiffness rests the heaviest section (and the load) at 1/kRestingShare of the allowed
+/// penetration, and leaves the rest for landing: a point arriving at v stops within v sqrt(m / k), about
+/// v / (10 sqrt(g' / penetration)) (in water 1 m/s lands within half of a 0.02 m allowance).
+constexpr double kRestingShare = 100.0;
+
+}  // namespace
+
+SeabedContactConstants makeSeabedContact(const CableParams& params, const LinkProperties& p) {
+  SeabedContactConstants c;
+  const SeabedParams& s = params.seabed;
+  c.bed = Seabed(s);
+  if (!s.enabled) return c;
+  c.points = s.contact_points;
+  for (int j = 0; j < c.points; ++j) c.node[j] = (j + 0.5) / c.points;
+  // The heaviest submerged weight per length among the slots (a float's buoyancy is its own; a cable
+  // that floats everywhere is pressed down only by its tension: its own weight in air sets the scale).
+  double heaviest = 0.0;
+  for (int k = 0; k < p.n; ++k) {
+    if (p.length(k) > 0.0) heaviest = std::max(heaviest, p.gravity * p.submerged_mass(k) / p.length(k));
+  }
+  if (heaviest <= 0.0) heaviest = p.gravity * params.mass_per_length;
+  c.allowed_penetration = s.penetration;
+  c.stiffness = s.stiffness > 0.0 ? s.stiffness : kRestingShare * heaviest / s.penetration;
+  c.rest_penetration = std::max(heaviest / c.stiffness, 1e-6 * s.penetration);
+  c.friction_axial = s.friction_axial;
+  c.friction_lateral = s.friction_lateral;
+  c.friction_velocity = s.friction_velocity;
+  c.damping.assign(p.n, 0.0);
+  for (int k = 0; k < p.n; ++k) {
+    const double per_length = p.length(k) > 0.0 ? p.mass(k) / p.length(k) : params.mass_per_length;
+    c.damping[k] = 2.0 * s.damping_ratio * std::sqrt(c.stiffness * (per_length + p.added_mass_per_length(k)));
+  }
+  const double load_weight = p.gravity * p.load_submerged_mass;
+  c.load_contact = params.load.mode != LoadMode::kAttached && load_weight > 0.0;
+  if (c.load_contact) {
+    c.load_stiffness = kRestingShare * load_weight / s.penetration;
+    c.load_damping = 2.0 * s.damping_ratio * std::sqrt(c.load_stiffness * (p.load_mass + params.load.added_mass));
+    c.load_rest = load_weight / c.load_stiffness;
+  }
+  return c;
+}
+
+bool pointContact(const SeabedContactConstants& c, double share, double k, double damping, double rest, const Vec3& p,
+                  const Vec3& v, const Vec3& axis, PointContact& out) {
+  const SeabedProbe probe = c.bed.probe(p.x, p.y);
+  const double delta = Seabed::penetration(probe, p.z);
+  if (delta <= 0.0) return false;
+  const Vec3 n = probe.into;
+  const double rate = dot(v, n);  // penetration rate [m/s]
+  // Spring and damper; the damper ramps in over the resting penetration (continuous at touchdown),
+  // and the bed only pushes (a point leaving fast feels nothing rather than a pull).
+  const double ramp = std::min(1.0, delta / rest);
+  const double spring = share * k * delta;
+  const double normal = std::max(0.0, spring + share * damping * ramp * rate);  // [N]
+  Vec3 force = -normal * n;
+  // What the spring does not store is dissipated: (N - k delta share) delta' >= 0 (the damper's
+  // c ramp delta'^2 share, or, when the bed lets go, -k delta delta' share with delta' < 0).
+  double dissipation = (normal - spring) * rate;
+  if (normal > 0.0 && (c.friction_axial > 0.0 || c.friction_lateral > 0.0)) {
+    const Vec3 slip = v - rate * n;  // in the bed's tangent plane
+    const double speed = std::sqrt(dot(slip, slip));
+    // Coulomb above the regularization speed, viscous below it (continuous; zero at rest).
+    const double scale = normal / std::max(speed, c.friction_velocity);
+    const Vec3 along = axis - dot(axis, n) * n;
+    const double along_squared = dot(along, along);
+    Vec3 friction;
+    if (along_squared > 1e-12) {
+      const Vec3 unit = (1.0 / std::sqrt(along_squared)) * along;
+      const Vec3 axial = dot(slip, unit) * unit;
+      friction = -scale * (c.friction_axial * axial + c.friction_lateral * (slip - axial));
+    } else {
+      friction = -(scale * c.friction_lateral) * slip;  // the load, or a link standing on end
+    }
+    force = force + friction;
+    dissipation -= dot(friction, slip);
+  }
+  out.force = force;
+  out.dissipation = dissipation;
+  out.penetration = delta;
+  return true;
+}
+
+namespace {
+
+/// The contact of every deployed link and of the load at the kinematics in `data`. Adds the forces to
+/// `links` and `load_external` when given (the hot path: the data's own), fills `report` when given.
+/// Returns the dissipated power [W].
+CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data, LinkBlocks* links,
+                                  Eigen::Vector3d* load_external, SeabedReport* report) {
+  const SeabedContactConstants& c = model.seabedContact();
+  const int n = model.links(), first = model.firstLink();
+  double dissipation = 0.0, arc_before = 0.0;
+  const double shallowest = c.bed.shallowest();
+  // The report's touchdown: where the signed penetration first crosses zero from the base, linear
+  // between the contact point before (or the base end) and the first one in the bed.
+  double previous_arc = 0.0, previous_penetration = -std::numeric_limits<double>::infinity();
+  for (int b = model.firstBlock(); b < data.links.blocks(); ++b) {
+    const LinkConstants& constants = model.block(b);
+    const LinkBlock& block = data.links.block(b);
+    // Nothing of a block whose links all end above the shallowest depth touches: one test for eight.
+    double deepest = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const double z0 = block.base_pos.z[i], z1 = z0 + constants.length[i] * block.u.z[i];
+      deepest = std::max(deepest, std::max(z0, z1));
+    }
+    if (deepest <= shallowest && !report) continue;  // (the arc lengths only matter to the report)
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const int k = b * kBlockLanes + i;
+      const double l = constants.length[i];
+      if (k < first || k >= n || l <= 0.0) continue;
+      const double share = l / c.points;
+      const Vec3 base = block.base_pos[i], velocity = block.base_vel[i], axis = block.u[i], rate = block.axis_rate[i];
+      Vec3 force{0.0, 0.0, 0.0}, moment{0.0, 0.0, 0.0};
+      double normal = 0.0;
+      for (int j = 0; j < c.points; ++j) {
+        const double s = c.node[j] * l;
+        const Vec3 point = base + s * axis;
+        PointContact contact;
+        const bool touching =
+            pointContact(c, share, c.stiffness, c.damping[k], c.rest_penetration, point, velocity + s * rate, axis, contact);
+        if (report && !report->touching) {
+          const double penetration = Seabed::penetration(c.bed.probe(point.x, point.y), point.z);
+          if (touching) {
+            const double before = std::isfinite(previous_penetration) ? previous_penetration : penetration;
+            const double fraction = before < 0.0 ? -before / (penetration - before) : 0.0;
+            report->touchdown_arc_length = previous_arc + fraction * (arc_before + s - previous_arc);
+            const Eigen::Vector3d here = toEigen(point);
+            report->touchdown = here + (fraction - 1.0) * (arc_before + s - previous_arc) * toEigen(axis);
+          }
+          previous_arc = arc_before + s;
+          previous_penetration = penetration;
+        }
+        if (!touching) continue;
+        force = force + contact.force;
+        moment = moment + s * contact.force;
+        dissipation += contact.dissipation;
+        if (report) {
+          normal -= dot(contact.force, c.bed.probe(point.x, point.y).into);  // the friction is tangential
+          report->grounded_length += share;
+          report->max_penetration = std::max(report->max_penetration, contact.penetration);
+          report->touching = true;
+        }
+      }
+      if (links) {
+        LinkBlock& target = links->block(b);
+        target.force.set(i, target.force[i] + force);
+        target.moment.set(i, target.moment[i] + moment);
+      }
+      if (report) {
+        report->link_force.col(k) = toEigen(force);
+        report->normal_force(k) = normal;
+      }
+      arc_before += l;
+    }
+  }
+  if (c.load_contact) {
+    PointContact contact;
+    if (pointContact(c, 1.0, c.load_stiffness, c.load_damping, c.load_rest, toVec3(data.tip_position), toVec3(data.tip_velocity),
+                     {0.0, 0.0, 0.0}, contact)) {
+      if (load_external) *load_external += toEigen(contact.force);
+      dissipation += contact.dissipation;
+      if (report) {
+        report->load_force = toEigen(contact.force);
+        report->max_penetration = std::max(report->max_penetration, contact.penetration);
+      }
+    }
+  }
+  return dissipation;
+}
+
+}  // namespace
+
+CABLE_HOT_PATH void addSeabedContact(const ChainModel& model, ChainData& data) {
+  data.contact_dissipation = contactPass(model, data, &data.links, &data.load_external, nullptr);
+}
+
+void reportSeabedContact(const ChainModel& model, const ChainData& data, SeabedReport& report) {
+  const int n = model.links();
+  report = SeabedReport{};
+  report.link_force.setZero(3, n);
+  report.normal_force.setZero(n);
+  contactPass(model, data, nullptr, nullptr, &report);
+  report.energy = seabedContactEnergy(model, data);
+}
+
+CABLE_HOT_PATH double seabedContactEnergy(const ChainModel& model, const ChainData& data) {
+  const SeabedContactConstants& c = model.seabedContact();
+  if (!c.enabled()) return 0.0;
+  const int n = model.links();
+  double energy = 0.0;
+  for (int k = model.firstLink(); k < n; ++k) {
+    const double l = model.get(&LinkConstants::length, k);
+    if (l <= 0.0) continue;
+    const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), axis = data.links.get(&LinkBlock::u, k);
+    if (std::max(base.z(), base.z() + l * axis.z()) <= c.bed.shallowest()) continue;
+    for (int j = 0; j < c.points; ++j) {
+      const Eigen::Vector3d p = base + (c.node[j] * l) * axis;
+      const double delta = Seabed::penetration(c.bed.probe(p.x(), p.y()), p.z());
+      if (delta > 0.0) energy += 0.5 * (l / c.points) * c.stiffness * delta * delta;
+    }
+  }
+  if (c.load_contact) {
+    const Eigen::Vector3d& p = data.tip_position;
+    const double delta = Seabed::penetration(c.bed.probe(p.x(), p.y()), p.z());
+    if (delta > 0.0) energy += 0.5 * c.load_stiffness * delta * delta;
+  }
+  return energy;
+}
+
+}  // namespace cable_dynamics
