@@ -1,3 +1,4 @@
+#include "cable_dynamics/ros/seabed_markers.h"
 #include "cable_dynamics/ros/cable_node.h"
 
 #include <algorithm>
@@ -84,6 +85,13 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   joint_pub_ = nh_.advertise<sensor_msgs::JointState>("joint_states", 10);
   state_pub_ = nh_.advertise<cable_msgs::CableState>("cable_state", 10);
   marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("cable_markers", 2);
+  if (params_.seabed.enabled) {
+    // The bottom once, latched (a late rviz still gets it); the links on it with every output.
+    seabed_pub_ = nh_.advertise<visualization_msgs::Marker>("seabed_marker", 1, true);
+    seabed_pub_.publish(seabedMarker(params_, options_.world_frame, options_.base_position));
+    contact_pub_ = nh_.advertise<visualization_msgs::Marker>("seabed_contact_marker", 2);
+    contact_marker_ = contactMarker(params_, options_.world_frame);
+  }
   wrench_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("rov_wrench", 10);
   wrench_world_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("rov_wrench_world", 10);
   base_wrench_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("base_wrench", 10);
@@ -270,6 +278,10 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   tf_broadcaster_.sendTransform(outputs_.transforms);
   tf_broadcaster_.sendTransform(outputs_.body_transforms);
   marker_pub_.publish(outputs_.markers);
+  if (params_.seabed.enabled) {
+    fillContactMarker(source_.snapshot, options_.base_position, stamp, contact_marker_);
+    contact_pub_.publish(contact_marker_);
+  }
   state_pub_.publish(outputs_.state);
   wrench_pub_.publish(outputs_.wrench);
   wrench_world_pub_.publish(outputs_.wrench_world);

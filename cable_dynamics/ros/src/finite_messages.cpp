@@ -52,7 +52,9 @@ bool allFinite(const cable_msgs::CableState& msg) {
          std::isfinite(msg.kinetic_energy) && std::isfinite(msg.potential_energy) &&
          std::isfinite(msg.elastic_energy) && std::isfinite(msg.dissipated_energy) && std::isfinite(msg.sim_time) &&
          std::isfinite(msg.step_time) && std::isfinite(msg.real_time_factor) && std::isfinite(msg.lag) &&
-         std::isfinite(msg.deployed_length) && std::isfinite(msg.line_pull) && std::isfinite(msg.winch_speed);
+         std::isfinite(msg.deployed_length) && std::isfinite(msg.line_pull) && std::isfinite(msg.winch_speed) &&
+         std::isfinite(msg.grounded_length) && std::isfinite(msg.touchdown_arc_length) && finite(msg.touchdown) &&
+         std::isfinite(msg.max_penetration) && std::isfinite(msg.contact_energy) && finite(msg.seabed_force);
 }
 
 bool allFinite(const geometry_msgs::WrenchStamped& msg) {

@@ -151,6 +151,7 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   text.text.reserve(160);
 
   out.state.tension.assign(n, 0.0);
+  out.state.seabed_force.assign(params.seabed.enabled ? n : 0, 0.0);
   out.state.deployed_links = static_cast<uint32_t>(n);
   out.state.header.frame_id = world_frame;
   out.wrench.header.frame_id = names.rov();           // about the ROV's origin, in its axes
@@ -310,6 +311,19 @@ void fillCableState(const OutputSource& source, const NodeStatus& status, const 
   msg.stale_inputs = status.stale;
   msg.diverged_steps = status.diverged;
   msg.retried_steps = status.retried;
+  const SeabedReport& bed = c.seabed;
+  msg.seabed = !msg.seabed_force.empty();
+  msg.grounded_length = bed.grounded_length;
+  msg.touchdown_arc_length = bed.touching ? bed.touchdown_arc_length : -1.0;
+  const Eigen::Vector3d touchdown = paperToWorld(bed.touchdown);
+  msg.touchdown.x = touchdown.x();
+  msg.touchdown.y = touchdown.y();
+  msg.touchdown.z = touchdown.z();
+  msg.max_penetration = bed.max_penetration;
+  msg.contact_energy = c.contact_energy;
+  for (std::size_t k = 0; k < msg.seabed_force.size() && k < static_cast<std::size_t>(bed.normal_force.size()); ++k) {
+    msg.seabed_force[k] = bed.normal_force(k);
+  }
 }
 
 void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,

@@ -74,6 +74,8 @@ class CableNode {
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher joint_pub_, state_pub_, marker_pub_, wrench_pub_, diagnostics_pub_;
+  ros::Publisher seabed_pub_, contact_pub_;  ///< with a seabed: the bottom (latched), the links on it
+  visualization_msgs::Marker contact_marker_;
   ros::Publisher wrench_world_pub_, base_wrench_pub_, base_wrench_world_pub_;
   ros::Subscriber rov_sub_, base_sub_, current_sub_, winch_sub_;
   ros::ServiceServer reset_srv_, equilibrium_srv_, model_srv_, pause_srv_, winch_srv_;
