@@ -405,3 +405,37 @@ TEST(SeabedFormulations, TheDenseAndTheRecursiveFormulationsSeeTheSameContact) {
   EXPECT_GT(a.seabed.grounded_length, 1.0);
   EXPECT_LT((a.omega_rate - b.omega_rate).norm(), 1e-9 * a.omega_rate.norm());
 }
+
+TEST(SeabedContact, TheHotPathsFlatBedSpecializationIsTheGeneralContact) {
+  // addSeabedContact() takes a shortcut on a flat bed (no probe, the axis's direction along the bed once
+  // per link); the report evaluates every point the general way. Same forces on every link.
+  const std::string config =
+      "cable: {links: 24, length: 24.0, diameter: 0.04, mass_per_length: 2.0}\n"
+      "seabed: {depth: 5.0, friction: {axial: 0.3, lateral: 0.6}}\n"
+      "initial: {elevation: 1.2, azimuth: 0.3}\n";
+  CableSimulator sim(loadConfigString(config));
+  for (int i = 0; i < 6000; ++i) ASSERT_TRUE(sim.step().ok);  // landed, sliding
+  ChainDynamics& chain = sim.dynamics();
+  ChainOutputs out;
+  ASSERT_TRUE(chain.evaluate(sim.state(), EndInputs{}, out));  // kinematics of this state in chain.data()
+  ChainData& data = chain.data();
+  // The link forces without the contact, then with the hot path's.
+  LinkBlocks without = data.links;
+  for (int b = 0; b < without.blocks(); ++b) {
+    LinkBlock& block = without.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const int k = b * kBlockLanes + i;
+      if (k >= 24) continue;
+      block.force.set(i, block.force[i] - toVec3(out.seabed.link_force.col(k)));
+    }
+  }
+  data.links = without;
+  addSeabedContact(chain.model(), data);
+  int touching = 0;
+  for (int k = 0; k < 24; ++k) {
+    const Eigen::Vector3d hot = data.links.get(&LinkBlock::force, k) - without.get(&LinkBlock::force, k);
+    EXPECT_LT((hot - out.seabed.link_force.col(k)).norm(), 1e-9 * (1.0 + hot.norm())) << "link " << k + 1;
+    touching += out.seabed.normal_force(k) > 0.0;
+  }
+  EXPECT_GT(touching, 5);
+}

@@ -53,47 +53,51 @@ SeabedContactConstants makeSeabedContact(const CableParams& params, const LinkPr
   return c;
 }
 
-bool pointContact(const SeabedContactConstants& c, double share, double k, double damping, double rest, const Vec3& p,
-                  const Vec3& v, const Vec3& axis, PointContact& out) {
-  const SeabedProbe probe = c.bed.probe(p.x, p.y);
-  const double delta = Seabed::penetration(probe, p.z);
-  if (delta <= 0.0) return false;
-  const Vec3 n = probe.into;
-  const double rate = dot(v, n);  // penetration rate [m/s]
-  // Spring and damper; the damper ramps in over the resting penetration (continuous at touchdown),
-  // and the bed only pushes (a point leaving fast feels nothing rather than a pull).
-  const double ramp = std::min(1.0, delta / rest);
-  const double spring = share * k * delta;
-  const double normal = std::max(0.0, spring + share * damping * ramp * rate);  // [N]
-  Vec3 force = -normal * n;
-  // What the spring does not store is dissipated: (N - k delta share) delta' >= 0 (the damper's
-  // c ramp delta'^2 share, or, when the bed lets go, -k delta delta' share with delta' < 0).
-  double dissipation = (normal - spring) * rate;
-  if (normal > 0.0 && (c.friction_axial > 0.0 || c.friction_lateral > 0.0)) {
-    const Vec3 slip = v - rate * n;  // in the bed's tangent plane
-    const double speed = std::sqrt(dot(slip, slip));
-    // Coulomb above the regularization speed, viscous below it (continuous; zero at rest).
-    const double scale = normal / std::max(speed, c.friction_velocity);
-    const Vec3 along = axis - dot(axis, n) * n;
-    const double along_squared = dot(along, along);
-    Vec3 friction;
-    if (along_squared > 1e-12) {
-      const Vec3 unit = (1.0 / std::sqrt(along_squared)) * along;
-      const Vec3 axial = dot(slip, unit) * unit;
-      friction = -scale * (c.friction_axial * axial + c.friction_lateral * (slip - axial));
-    } else {
-      friction = -(scale * c.friction_lateral) * slip;  // the load, or a link standing on end
-    }
-    force = force + friction;
-    dissipation -= dot(friction, slip);
-  }
-  out.force = force;
-  out.dissipation = dissipation;
-  out.penetration = delta;
-  return true;
-}
-
 namespace {
+
+/// pointContact() on a flat bed for the K points of one link (n = +z everywhere), with what the points
+/// share computed once: the axis's direction along the bed. The same formulas, term for term; adds the
+/// force and its first moment, returns the dissipated power [W]. The hot path's case.
+CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactConstants& c, double l, double damping, const Vec3& base,
+                                                          const Vec3& velocity, const Vec3& axis, const Vec3& rate, Vec3& force,
+                                                          Vec3& moment) {
+  const double depth = c.bed.shallowest(), share = l / c.points, inverse_rest = 1.0 / c.rest_penetration;
+  const double along_squared = axis.x * axis.x + axis.y * axis.y;
+  const bool has_along = along_squared > 1e-12;
+  const double along_inverse = has_along ? 1.0 / std::sqrt(along_squared) : 0.0;
+  const double ax = axis.x * along_inverse, ay = axis.y * along_inverse;
+  const bool friction = c.friction_axial > 0.0 || c.friction_lateral > 0.0;
+  double dissipation = 0.0;
+  for (int j = 0; j < c.points; ++j) {
+    const double s = c.node[j] * l;
+    const double delta = base.z + s * axis.z - depth;
+    if (delta <= 0.0) continue;
+    const double speed_z = velocity.z + s * rate.z;
+    const double spring = share * c.stiffness * delta;
+    const double normal = std::max(0.0, spring + share * damping * std::min(1.0, delta * inverse_rest) * speed_z);
+    double fx = 0.0, fy = 0.0;
+    double point_dissipation = (normal - spring) * speed_z;
+    if (normal > 0.0 && friction) {
+      const double sx = velocity.x + s * rate.x, sy = velocity.y + s * rate.y;
+      const double scale = normal / std::max(std::sqrt(sx * sx + sy * sy), c.friction_velocity);
+      if (has_along) {
+        const double axial = sx * ax + sy * ay;
+        const double axial_x = axial * ax, axial_y = axial * ay;
+        fx = -scale * (c.friction_axial * axial_x + c.friction_lateral * (sx - axial_x));
+        fy = -scale * (c.friction_axial * axial_y + c.friction_lateral * (sy - axial_y));
+      } else {
+        fx = -scale * c.friction_lateral * sx;
+        fy = -scale * c.friction_lateral * sy;
+      }
+      point_dissipation -= fx * sx + fy * sy;
+    }
+    const Vec3 f{fx, fy, -normal};
+    force = force + f;
+    moment = moment + s * f;
+    dissipation += point_dissipation;
+  }
+  return dissipation;
+}
 
 /// The contact of every deployed link and of the load at the kinematics in `data`. Adds the forces to
 /// `links` and `load_external` when given (the hot path: the data's own), fills `report` when given.
@@ -104,6 +108,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
   const int n = model.links(), first = model.firstLink();
   double dissipation = 0.0, arc_before = 0.0;
   const double shallowest = c.bed.shallowest();
+  const bool flat = c.bed.flat() && links != nullptr;
   // The report's touchdown: where the signed penetration first crosses zero from the base, linear
   // between the contact point before (or the base end) and the first one in the bed.
   double previous_arc = 0.0, previous_penetration = -std::numeric_limits<double>::infinity();
@@ -124,6 +129,13 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
       const double share = l / c.points;
       const Vec3 base = block.base_pos[i], velocity = block.base_vel[i], axis = block.u[i], rate = block.axis_rate[i];
       Vec3 force{0.0, 0.0, 0.0}, moment{0.0, 0.0, 0.0};
+      if (flat && !report) {
+        dissipation += flatLinkContact(c, l, c.damping[k], base, velocity, axis, rate, force, moment);
+        LinkBlock& target = links->block(b);
+        target.force.set(i, target.force[i] + force);
+        target.moment.set(i, target.moment[i] + moment);
+        continue;
+      }
       double normal = 0.0;
       for (int j = 0; j < c.points; ++j) {
         const double s = c.node[j] * l;
@@ -206,6 +218,13 @@ CABLE_HOT_PATH double seabedContactEnergy(const ChainModel& model, const ChainDa
     if (l <= 0.0) continue;
     const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), axis = data.links.get(&LinkBlock::u, k);
     if (std::max(base.z(), base.z() + l * axis.z()) <= c.bed.shallowest()) continue;
+    if (c.bed.flat()) {  // the penetration is linear along the link
+      for (int j = 0; j < c.points; ++j) {
+        const double delta = base.z() + c.node[j] * l * axis.z() - c.bed.shallowest();
+        if (delta > 0.0) energy += 0.5 * (l / c.points) * c.stiffness * delta * delta;
+      }
+      continue;
+    }
     for (int j = 0; j < c.points; ++j) {
       const Eigen::Vector3d p = base + (c.node[j] * l) * axis;
       const double delta = Seabed::penetration(c.bed.probe(p.x(), p.y()), p.z());

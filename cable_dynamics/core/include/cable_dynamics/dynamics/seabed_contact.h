@@ -4,6 +4,8 @@
 ///        spring-damper per unit length at points along each link, regularized Coulomb friction with
 ///        separate axial and lateral coefficients, its potential energy and its dissipation.
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -54,8 +56,47 @@ struct PointContact {
 /// (`share` 1 and a zero axis for the load: friction isotropic at the lateral coefficient); stiffness
 /// `k` and damping `c` per share, resting penetration `rest`. false (and `out` untouched) when the
 /// point is above the bed.
-bool pointContact(const SeabedContactConstants& c, double share, double k, double damping, double rest, const Vec3& p,
-                  const Vec3& v, const Vec3& axis, PointContact& out);
+/// Inline: it runs for every contact point of every evaluation.
+EIGEN_ALWAYS_INLINE bool pointContact(const SeabedContactConstants& c, double share, double k, double damping, double rest,
+                                     const Vec3& p, const Vec3& v, const Vec3& axis, PointContact& out) {
+  const SeabedProbe probe = c.bed.probe(p.x, p.y);
+  const double delta = Seabed::penetration(probe, p.z);
+  if (delta <= 0.0) return false;
+  const Vec3 n = probe.into;
+  const double rate = dot(v, n);  // penetration rate [m/s]
+  // Spring and damper; the damper ramps in over the resting penetration (continuous at touchdown),
+  // and the bed only pushes (a point leaving fast feels nothing rather than a pull).
+  const double ramp = std::min(1.0, delta / rest);
+  const double spring = share * k * delta;
+  const double normal = std::max(0.0, spring + share * damping * ramp * rate);  // [N]
+  Vec3 force = -normal * n;
+  // What the spring does not store is dissipated: (N - k delta share) delta' >= 0 (the damper's
+  // c ramp delta'^2 share, or, when the bed lets go, -k delta delta' share with delta' < 0).
+  double dissipation = (normal - spring) * rate;
+  if (normal > 0.0 && (c.friction_axial > 0.0 || c.friction_lateral > 0.0)) {
+    const Vec3 slip = v - rate * n;  // in the bed's tangent plane
+    const double speed = std::sqrt(dot(slip, slip));
+    // Coulomb above the regularization speed, viscous below it (continuous; zero at rest).
+    const double scale = normal / std::max(speed, c.friction_velocity);
+    const Vec3 along = axis - dot(axis, n) * n;
+    const double along_squared = dot(along, along);
+    Vec3 friction;
+    if (along_squared > 1e-12) {
+      const Vec3 unit = (1.0 / std::sqrt(along_squared)) * along;
+      const Vec3 axial = dot(slip, unit) * unit;
+      friction = -scale * (c.friction_axial * axial + c.friction_lateral * (slip - axial));
+    } else {
+      friction = -(scale * c.friction_lateral) * slip;  // the load, or a link standing on end
+    }
+    force = force + friction;
+    dissipation -= dot(friction, slip);
+  }
+  out.force = force;
+  out.dissipation = dissipation;
+  out.penetration = delta;
+  return true;
+}
+
 
 /// What the outputs show of the contact at one state (paper frame).
 struct SeabedReport {
