@@ -77,6 +77,8 @@ cable_add_pytest(presets test/test_presets.py
 add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim cable_model)
 cable_add_pytest(unreliable_runs test/test_unreliable_runs.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
 add_dependencies(run_tests_cable_dynamics_pytest_unreliable_runs cable_sim)
+cable_add_pytest(beam_catenary test/test_beam_catenary.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
+add_dependencies(run_tests_cable_dynamics_pytest_beam_catenary cable_sim)
 
 # The node over ROS (rostest): test/node/node_tests.cmake.
 include(${CMAKE_CURRENT_LIST_DIR}/node/node_tests.cmake)
