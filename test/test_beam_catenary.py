@@ -93,3 +93,70 @@ def test_pinned_stiff_cable_between_two_points_matches_the_heavy_elastica(tmp_pa
     tip, _, _ = model_statics(tmp_path, 40)
     catenary = elastica(tip, ei=1e-3)
     assert np.linalg.norm(catenary - elastica(tip)) / np.linalg.norm(catenary) > 0.03
+
+
+def clamped_statics(tmp_path, links, base_direction, tip_direction):
+    config = tmp_path / f"clamped_{links}.yaml"
+    config.write_text(
+        f"cable: {{links: {links}, length: {L}, diameter: {D}, mass_per_length: {MASS},\n"
+        f"        stiffness: {{model: bending, bending_rigidity: {EI}, torsional_rigidity: {EI / 2}}}}}\n"
+        f"base: {{fixity: clamped, direction: [{base_direction[0]}, 0.0, {base_direction[1]}]}}\n"
+        f"load: {{mode: anchored, fixity: clamped, direction: [{tip_direction[0]}, 0.0, {tip_direction[1]}],\n"
+        f"        motion: {{offset: [{OFFSET[0]}, {OFFSET[1]}, {OFFSET[2]}]}}}}\n"
+        f"fluid: {{density: 0.0}}\n")
+    # The default coupling (2e4 N/m: the anchor gives a few centimetres, and the elastica is solved to
+    # the tip where it is): a 1e7 N/m spring on a clamped stiff cable conditions Newton badly (938
+    # iterations against 7, measured).
+    out = tmp_path / f"clamped_{links}.csv"
+    done = subprocess.run([binary(), "--config", str(config), "--statics", "--output", str(out)], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    header = out.read_text().splitlines()[0].split(",")
+    row = dict(zip(header, np.loadtxt(out, delimiter=",", skiprows=1)))
+    tip = np.array([row[f"end{links}_x"], -row[f"end{links}_z"]])
+    return tip, np.array([row["base_force_x"], -row["base_force_z"]]), np.array([row["load_force_x"], -row["load_force_z"]])
+
+
+def clamped_elastica(tip, theta_base, theta_tip):
+    """F(0) of the heavy elastica clamped at angles theta_base and theta_tip [rad] from the horizontal."""
+    X, Z = tip
+    s = np.linspace(0.0, L, 401)
+    chord = np.hypot(X, Z)
+    sag = np.sqrt(max(L * L - chord * chord, 0.0)) / 2.0
+    x0 = X * s / L
+    z0 = Z * s / L - 2.0 * sag * np.sin(np.pi * s / L)
+    theta0 = np.arctan2(np.gradient(z0, s), np.gradient(x0, s))
+    y0 = np.vstack([x0, z0, theta0, np.zeros_like(s)])
+
+    def rhs(s, y, p):
+        fx, fz0 = p
+        return np.vstack([np.cos(y[2]), np.sin(y[2]), y[3] / EI, -(np.cos(y[2]) * (fz0 + W * s) - np.sin(y[2]) * fx)])
+
+    def bc(ya, yb, p):
+        return np.array([ya[0], ya[1], ya[2] - theta_base, yb[2] - theta_tip, yb[0] - X, yb[1] - Z])
+
+    solution = solve_bvp(rhs, bc, s, y0, p=[W * L / 2.0, -W * L / 2.0], tol=1e-7, bc_tol=1e-9, max_nodes=100000)
+    assert solution.success, solution.message
+    return np.array(solution.p)
+
+
+def test_clamped_stiff_cable_between_two_points_matches_the_clamped_heavy_elastica(tmp_path):
+    # The base clamped 30 degrees below the horizontal toward the anchor, the tip (load.fixity: clamped)
+    # arriving horizontally: the clamps' half-link springs (EI / (l/2)) converge at second order too.
+    theta_base, theta_tip = -np.pi / 6.0, 0.0
+    base_direction = (np.cos(theta_base), np.sin(theta_base))
+    tip_direction = (np.cos(theta_tip), np.sin(theta_tip))
+    errors = {}
+    for n in (10, 20, 40):
+        tip, base_force, load_force = clamped_statics(tmp_path, n, base_direction, tip_direction)
+        f0 = clamped_elastica(tip, theta_base, theta_tip)
+        fl = f0 + np.array([0.0, W * L])
+        errors[n] = max(np.linalg.norm(base_force - f0), np.linalg.norm(load_force + fl)) / np.linalg.norm(f0)
+        print(f"clamped, n = {n}: base force {base_force} N against {f0}, error {errors[n]:.2e}")
+    order = np.log2(errors[20] / errors[40])
+    print(f"clamped: order in n between 20 and 40: {order:.2f}")
+    assert errors[40] < 0.005
+    assert order > 1.7
+    # The clamps matter: pinned ends through the same points pull differently.
+    tip, _, _ = clamped_statics(tmp_path, 40, base_direction, tip_direction)
+    assert np.linalg.norm(elastica(tip) - clamped_elastica(tip, theta_base, theta_tip)) / np.linalg.norm(elastica(tip)) > 0.03

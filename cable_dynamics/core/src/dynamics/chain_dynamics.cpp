@@ -79,7 +79,7 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   const Vec3 exit_velocity = data_.links.of(first).base_vel[LinkBlocks::lane(first)];
   // A clamp turning with the vessel works through the torque it holds the base link with.
   data_.input_power = data_.joint_force.col(first).dot(toEigen(exit_velocity)) + data_.coupling.dot(data_.tip_velocity) +
-                      data_.clamp_torque.dot(data_.clamp_omega);
+                      data_.clamp_torque.dot(data_.clamp_omega) + data_.tip_clamp_torque.dot(data_.tip_clamp_omega);
   if (ends.winch) data_.input_power += ends.winch_speed * paidOutEnergyPerLength(model_, data_, exit_velocity);
   return true;
 }
@@ -90,6 +90,8 @@ void ChainDynamics::applyEnds(const EndInputs& ends) {
   data_.clamp_axis = ends.clamp_moves ? ends.clamp_axis : p.clamp_axis;
   data_.clamp_twist = ends.clamp_moves ? ends.clamp_twist : p.clamp_twist;
   data_.clamp_omega = ends.clamp_moves ? ends.clamp_omega : Eigen::Vector3d::Zero();
+  data_.tip_clamp_axis = ends.tip_clamp_moves ? ends.tip_clamp_axis : p.tip_clamp_axis;
+  data_.tip_clamp_omega = ends.tip_clamp_moves ? ends.tip_clamp_omega : Eigen::Vector3d::Zero();
 }
 
 bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, Eigen::VectorXd& xdot) {

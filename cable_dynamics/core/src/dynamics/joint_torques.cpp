@@ -76,6 +76,21 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
       data.clamp_torque = bend_torque + twist_torque + damper;  // the vessel holds the base link with it
     }
   }
+  // A clamped tip: a bend spring and damper between the last link and the tip's clamp axis, no twist
+  // spring (a swivel). Written as a joint whose inboard body is the last link and outboard the clamp.
+  const int last = model.links() - 1;
+  if (p.tip_clamp_stiffness > 0.0 || p.tip_clamp_damping > 0.0) {
+    const Eigen::Vector3d axis = links.get(&LinkBlock::u, last), clamp = data.tip_clamp_axis;
+    const Eigen::Vector3d cross = axis.cross(clamp);
+    const double sine = cross.norm(), bend = std::atan2(sine, axis.dot(clamp));
+    const Eigen::Vector3d on_clamp = -p.tip_clamp_stiffness * bendOverSine(bend, sine) * cross;
+    const Eigen::Vector3d relative = data.tip_clamp_omega - links.get(&LinkBlock::omega, last);
+    const Eigen::Vector3d direction = (axis + clamp).normalized();
+    const Eigen::Vector3d damper_on_clamp = -p.tip_clamp_damping * (relative - relative.dot(direction) * direction);
+    data.spring_torque.col(last) -= on_clamp;
+    data.damping_torque.col(last) -= damper_on_clamp;
+    data.tip_clamp_torque = -(on_clamp + damper_on_clamp);  // the clamp holds the last link with it
+  }
 }
 
 }  // namespace
@@ -84,6 +99,7 @@ void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::
   const bool paper = model.stiffnessModel() == StiffnessModel::kPaper;
   if (paper && !model.hasSprings()) return;  // all zero since construction (the presets)
   data.clamp_torque.setZero();
+  data.tip_clamp_torque.setZero();
   data.spring_torque.setZero();
   data.damping_torque.setZero();
   if (paper) {
@@ -126,6 +142,11 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
     const JointGeometry g = jointGeometry(prev, links.get(&LinkBlock::u, k), x(StateLayout::twist(k)),
                                           inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
     energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
+  }
+  if (p.tip_clamp_stiffness > 0.0) {
+    const Eigen::Vector3d axis = links.get(&LinkBlock::u, model.links() - 1), clamp = data.tip_clamp_axis;
+    const double bend = std::atan2(axis.cross(clamp).norm(), axis.dot(clamp));
+    energy += 0.5 * p.tip_clamp_stiffness * bend * bend;
   }
   return energy;
 }

@@ -136,6 +136,14 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
   p.clamp_axis = Eigen::Vector3d(d.x(), -d.y(), -d.z()).normalized();  // paper frame, z down
   p.clamp_twist = std::hypot(p.clamp_axis.x(), p.clamp_axis.y()) > 1e-12 ? std::atan2(p.clamp_axis.x(), p.clamp_axis.y()) : 0.0;
 
+  // A clamped tip: the last link's half, l_n / 2, to the clamp (the joint springs' rule at the base).
+  if (params.load.fixity == TipFixity::kClamped && n > 0) {
+    const double rigidity = bending(n - 1);
+    p.tip_clamp_stiffness = rigidity > 0.0 ? rigidity * (2.0 / p.length(n - 1)) : 2.0 * k.elevation;
+    p.tip_clamp_damping = params.damping.elevation;
+    const Eigen::Vector3d& t = params.load.direction;  // world (anchored) or the ROV's frame at rest (attached)
+    p.tip_clamp_axis = Eigen::Vector3d(t.x(), -t.y(), -t.z()).normalized();
+  }
   p.load_mass = params.load.mass;
   p.load_submerged_mass = params.load.mass - params.fluid.density * params.load.volume;
   p.gravity = params.gravity;

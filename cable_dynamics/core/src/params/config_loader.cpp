@@ -117,6 +117,18 @@ void parseLoad(Section load, CableParams& p) {
   coupling.rejectUnknownKeys();
   p.load.motion = parseMotion(load.sub("motion"));
   p.load.attachment = vector3(load, "attachment", 1e3, "m");
+  p.load.fixity = load.choice("fixity", "pinned", {"pinned", "clamped"}) == "pinned" ? TipFixity::kPinned : TipFixity::kClamped;
+  if (load.has("direction")) {
+    const std::vector<double> d = load.numberList("direction", 3, -1e3, 1e3, false, "");
+    p.load.direction = Eigen::Vector3d(d[0], d[1], d[2]);
+    if (p.load.direction.norm() < 1e-9) {
+      throw ConfigError("load.direction", describeNode(load.raw("direction")), "a non-zero vector");
+    }
+    p.load.direction.normalize();
+  }
+  if (p.load.fixity == TipFixity::kClamped && p.load.mode == LoadMode::kFree) {
+    throw ConfigError("load.fixity", "clamped", "pinned with load.mode: free (a clamp needs an anchor or an ROV to hold it)");
+  }
   load.rejectUnknownKeys();
 }
 
@@ -350,6 +362,9 @@ CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   simulation.rejectUnknownKeys();
   if (top.has("winch")) parseWinch(top.sub("winch"), p);
   top.rejectUnknownKeys();
+  if (p.load.fixity == TipFixity::kClamped && p.stiffness.model != StiffnessModel::kBending) {
+    throw ConfigError("load.fixity", "clamped", "pinned with cable.stiffness.model: paper; use model: bending");
+  }
   // The paper's springs act on absolute angles measured from the vertical: a clamp direction or a pin
   // has no meaning for them.
   const bool default_base = p.base.fixity == BaseFixity::kClamped && (p.base.direction + Eigen::Vector3d::UnitZ()).norm() < 1e-12;

@@ -84,6 +84,8 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   problem.clamp_moves = ends.clamp_moves;
   problem.clamp_axis = ends.clamp_axis;
   problem.clamp_twist = ends.clamp_twist;
+  problem.tip_clamp_moves = ends.tip_clamp_moves;
+  problem.tip_clamp_axis = ends.tip_clamp_axis;
   dynamics_.applyEnds(ends);  // the winch's link at its present length
   StaticSolution s = solveStatics(dynamics_.model(), dynamics_.current(), problem, options);
   if (!s.converged) return s;
@@ -277,6 +279,10 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   const Eigen::Vector3d on_rov =
       params_.load.mode == LoadMode::kAttached ? Eigen::Vector3d(-out.chain.coupling_force) : out.chain.load_force;
   out.rov = wrenchAboutOrigin(paperToWorld(on_rov), out.rov_attitude, params_.load.attachment);
+  // A clamped tip also holds the last link with a torque: the ROV (or anchor) feels its opposite.
+  const Eigen::Vector3d tip_clamp = -paperToWorld(dynamics_.data().tip_clamp_torque);
+  out.rov.moment_world += tip_clamp;
+  out.rov.moment_body += out.rov_attitude.conjugate() * tip_clamp;
 }
 
 void CableSimulator::setCurrent(const Eigen::Vector3d& current) {

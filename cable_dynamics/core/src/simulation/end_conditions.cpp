@@ -88,6 +88,15 @@ EndInputs EndConditions::at(double t) const {
     // the clamp's damper then acts on the base link's own angular velocity.
     ends.clamp_omega = external_base_ ? Eigen::Vector3d::Zero() : worldToPaper(angularVelocity(rotation, rate));
   }
+  // An attached ROV's clamp turns with the ROV (its direction is in the ROV's frame).
+  if (load_.mode == LoadMode::kAttached && load_.fixity == TipFixity::kClamped) {
+    Eigen::Matrix3d rotation = load_attitude_.toRotationMatrix(), rate = Eigen::Matrix3d::Zero(), acceleration;
+    if (!external_load_ && !load_.motion.attitude_amplitude.isZero()) attitudeAt(load_.motion, t, rotation, rate, acceleration);
+    ends.tip_clamp_moves = true;
+    ends.tip_clamp_axis = worldToPaper(rotation * load_.direction);
+    // As the base's: an external attitude comes without its rate.
+    ends.tip_clamp_omega = external_load_ ? Eigen::Vector3d::Zero() : worldToPaper(angularVelocity(rotation, rate));
+  }
   if (has_winch_) {
     const WinchMotion m = winch_.at(t);
     ends.winch = true;

@@ -62,6 +62,11 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
     stiffest.consider(4.0 * c_bend / bend_inertia, "the bend damper of joint " + joint);
     stiffest.consider(4.0 * p.damping_torsion(k) / p.inertia_polar(k), "the torsion damper of joint " + joint);
   }
+  if (p.tip_clamp_stiffness > 0.0 && n > 0) {
+    const double l = p.length(n - 1), bend_inertia = p.mass(n - 1) * l * l / 12.0;
+    stiffest.consider(std::sqrt(4.0 * p.tip_clamp_stiffness / bend_inertia), "the tip clamp's bend spring");
+    stiffest.consider(4.0 * p.tip_clamp_damping / bend_inertia, "the tip clamp's bend damper");
+  }
   if (params.load.mode != LoadMode::kFree && n > 0) {
     const double l = p.length(n - 1);
     const double tip_mass = p.load_mass + params.load.added_mass + 0.5 * (p.mass(n - 1) + p.added_mass_per_length(n - 1) * l);

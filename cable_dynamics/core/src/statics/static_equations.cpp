@@ -32,6 +32,9 @@ StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& cu
   in_water_ = model.fluidDensity() > 0.0;
   coupling_stiffness_ = problem.tip_coupled ? model.load().coupling_stiffness : 0.0;
   clamp_axis_ = problem.clamp_moves ? problem.clamp_axis : p.clamp_axis;
+  tip_clamp_stiffness_ = problem.tip_coupled ? p.tip_clamp_stiffness : 0.0;
+  tip_clamp_axis_ = problem.tip_clamp_moves ? problem.tip_clamp_axis : p.tip_clamp_axis;
+  has_bend_ = has_bend_ || tip_clamp_stiffness_ > 0.0;
 }
 
 void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,
@@ -138,6 +141,12 @@ void StaticEquations::residual(const StaticState& s, int i, LinkResidual& r) con
   // bend springs remain, and both torques are normal to u_i.
   Eigen::Vector3d torque = bendTorque(i, i > 0 ? Eigen::Vector3d(s.axis.col(i - 1)) : clamp_axis_, u);
   if (i + 1 < m_) torque -= bendTorque(i + 1, u, s.axis.col(i + 1));
+  if (i + 1 == m_ && tip_clamp_stiffness_ > 0.0) {
+    // The tip's clamp, as joint_torques.cpp: a bend spring from the last link to the clamp's axis.
+    const Eigen::Vector3d cross = u.cross(tip_clamp_axis_);
+    const double sine = cross.norm(), bend = std::atan2(sine, u.dot(tip_clamp_axis_));
+    torque += stiffness_scale_ * tip_clamp_stiffness_ * bendOverSine(bend, sine) * cross;
+  }
   r.moment = u.cross(n - length_(i) * next) + torque;
   r.closure = i > 0 ? Eigen::Vector3d(p - s.base.col(i - 1) - length_(i - 1) * s.axis.col(i - 1))
                     : Eigen::Vector3d(p - problem_.base_position);

@@ -102,6 +102,8 @@ class StaticEquations {
   double stiffness_scale_ = 1.0;
   double contact_scale_ = 1.0;
   Eigen::Vector3d clamp_axis_;
+  double tip_clamp_stiffness_ = 0.0;  ///< [N m/rad], 0 with a pinned tip
+  Eigen::Vector3d tip_clamp_axis_;
 };
 
 }  // namespace statics

@@ -64,6 +64,10 @@ struct ChainData {
   double clamp_twist = 0.0;
   Eigen::Vector3d clamp_omega = Eigen::Vector3d::Zero();  ///< [rad/s]
   Eigen::Vector3d clamp_torque = Eigen::Vector3d::Zero();
+  // The tip's clamp (a clamped tip), and the torque it holds the last link with [N m].
+  Eigen::Vector3d tip_clamp_axis = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d tip_clamp_omega = Eigen::Vector3d::Zero();  ///< [rad/s]
+  Eigen::Vector3d tip_clamp_torque = Eigen::Vector3d::Zero();
 
   // Powers [W]: of the drag, of the added-mass force, of the moving base and the coupling.
   double drag_power = 0.0, added_mass_power = 0.0, input_power = 0.0;

@@ -36,6 +36,11 @@ struct EndInputs {
   Eigen::Vector3d clamp_axis = Eigen::Vector3d::UnitZ();
   double clamp_twist = 0.0;
   Eigen::Vector3d clamp_omega = Eigen::Vector3d::Zero();
+  /// A clamped tip turned with the ROV (attached, load.fixity clamped): the clamp's axis (unit) and its
+  /// angular velocity [rad/s]. Otherwise LinkProperties::tip_clamp_axis, at rest.
+  bool tip_clamp_moves = false;
+  Eigen::Vector3d tip_clamp_axis = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d tip_clamp_omega = Eigen::Vector3d::Zero();
   /// A winch pays the cable out at the base: the winch's link (ChainModel::firstLink()) has length
   /// winch_length and grows at winch_speed, its material sliding out along its axis at that speed.
   bool winch = false;

@@ -39,6 +39,12 @@ enum class BaseFixity {
   kPinned,   ///< free to rotate: no spring or damper at joint 1
 };
 
+/// How an anchored or attached tip holds the last link (the bending model).
+enum class TipFixity {
+  kPinned,   ///< free to rotate: the coupling holds a point
+  kClamped,  ///< its direction held along load.direction by a bend spring (a swivel: torsion is free)
+};
+
 /// How the terminal load is held (used by the simulator).
 enum class LoadMode {
   kFree,      ///< the load hangs at the tip, moved only by the cable and the fluid
@@ -93,6 +99,11 @@ struct LoadParams {
   /// Where the tether enters the ROV, in the ROV's frame (x forward, z up at rest) [m]: the target the
   /// tip is coupled to is this point of the ROV, and the cable's force there puts a moment on it.
   Eigen::Vector3d attachment = Eigen::Vector3d::Zero();
+  /// Pinned, or clamped along `direction` (anchored: world frame; attached: the ROV's frame, turning
+  /// with it): the last link's axis, from the cable into the tip, held by a bend spring EI / (l_n / 2)
+  /// (the half link to the tip, as at the base) and the bend damper. Torsion stays free (a swivel).
+  TipFixity fixity = TipFixity::kPinned;
+  Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ();  ///< unit [-]
 };
 
 /// The cable's base (vessel, cage or fixed point).
@@ -297,6 +308,11 @@ struct LinkProperties {
   /// against this frame. (A pinned base has no springs or dampers at joint 1 instead.)
   Eigen::Vector3d clamp_axis = Eigen::Vector3d::UnitZ();
   double clamp_twist = 0.0;
+  /// A clamped tip (LoadParams::fixity): the bend spring [N m/rad] and damper [N m s/rad] between the
+  /// last link and the tip's clamp, and the clamp's axis at rest, paper frame (an attached ROV turns it).
+  double tip_clamp_stiffness = 0.0;
+  double tip_clamp_damping = 0.0;
+  Eigen::Vector3d tip_clamp_axis = Eigen::Vector3d::UnitZ();
 };
 
 /// Derives the per-link quantities; `params` must already be valid (see config_loader.h).

@@ -48,6 +48,10 @@ struct StaticProblem {
   bool clamp_moves = false;
   Eigen::Vector3d clamp_axis = Eigen::Vector3d::UnitZ();
   double clamp_twist = 0.0;
+  /// A clamped tip turned with the ROV (EndInputs::tip_clamp_*): its axis in place of the model's
+  /// LinkProperties::tip_clamp_axis.
+  bool tip_clamp_moves = false;
+  Eigen::Vector3d tip_clamp_axis = Eigen::Vector3d::UnitZ();
 };
 
 struct StaticOptions {
