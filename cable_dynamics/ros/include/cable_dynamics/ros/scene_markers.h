@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// \brief The rviz scene around the cable's line: the cable as per-link cylinders of its real diameter
+///        coloured by tension, the vessel (hull, deckhouse, A-frame) and the ROV (body, thrusters) as
+///        simple marker compositions in their own TF frames. Prepared once, then only filled.
+///
+/// Seabed hook: when the core gains a seabed (CableParams), its marker belongs here as one more
+/// composition, prepared once in the world frame by a `prepareSeabedMarkers(params, world_frame, ...)`
+/// beside the two below (a CUBE for a flat bed, a TRIANGLE_LIST for a sloped one) and counted in
+/// kSceneMarkerCount; it does not move, so fillTubeMarkers needs nothing of it.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <visualization_msgs/Marker.h>
+
+#include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/ros/output_source.h"
+
+namespace cable_dynamics {
+
+/// Sizes of the two bodies' shapes (`ros.vessel_size`, `ros.rov_size`); drawing only, no physics.
+struct BodyShapes {
+  Eigen::Vector3d vessel_size{30.0, 8.0, 4.0};  ///< hull length, beam, depth (keel to deck) [m]
+  Eigen::Vector3d rov_size{2.0, 1.4, 1.2};      ///< body length, width, height [m]
+};
+
+/// Markers of the vessel (3) and the ROV (5): vessel_hull, vessel_deckhouse, vessel_aframe (LINE_LIST),
+/// rov_body, rov_thrusters (ids 0..3, CYLINDER). Constant in the bodies' frames `vessel_frame` and
+/// `rov_frame`; the A-frame's top is the hang-off point (params.base.hang_off), the deck one A-frame
+/// height below it and the stern under the top, so the cable leaves the A-frame's sheave.
+constexpr int kSceneMarkerCount = 8;
+void prepareBodyMarkers(const CableParams& params, const BodyShapes& shapes, const std::string& vessel_frame,
+                        const std::string& rov_frame, visualization_msgs::Marker* markers);
+
+/// The cable as one CYLINDER per slot (ns cable_tube, id = slot), in `paper_frame`: diameter the link's
+/// section's (scale.x = scale.y), length and pose from the link's ends, each cycle (fillTubeMarkers).
+void prepareTubeMarkers(const CableParams& params, const std::string& paper_frame,
+                        visualization_msgs::Marker* markers);
+/// Places each deployed link's cylinder between its ends, coloured by its tension against `tension_scale`
+/// [N]; a slot on the winch's drum gets action DELETE (nothing left in rviz). `markers` holds one per slot.
+void fillTubeMarkers(const OutputSource& source, double tension_scale, visualization_msgs::Marker* markers);
+
+/// Blue (slack) through green to red (the top of the scale); compression in grey.
+std_msgs::ColorRGBA tensionColor(double tension, double scale);
+
+}  // namespace cable_dynamics
