@@ -17,7 +17,7 @@ import rospy
 import rosunit
 import tf2_ros
 from geometry_msgs.msg import PoseStamped
-from visualization_msgs.msg import InteractiveMarkerFeedback, InteractiveMarkerUpdate, Marker, MarkerArray
+from visualization_msgs.msg import InteractiveMarkerFeedback, InteractiveMarkerInit, Marker, MarkerArray
 
 NS = "/scene"
 LINKS = 10
@@ -62,7 +62,7 @@ class Scene(unittest.TestCase):
 
         rospy.Subscriber(NS + "/cable_markers", MarkerArray, on_markers)
         rospy.Subscriber(NS + "/rov_pose", PoseStamped, lambda m: cls.poses.append(m))
-        rospy.Subscriber(NS + "/rov_target_marker/update_full", InteractiveMarkerUpdate,
+        rospy.Subscriber(NS + "/rov_target_marker/update_full", InteractiveMarkerInit,
                          lambda m: setattr(cls, "update", m))
         cls.tf = tf2_ros.Buffer()
         cls.listener = tf2_ros.TransformListener(cls.tf)
@@ -138,7 +138,10 @@ class Scene(unittest.TestCase):
         fb.header.frame_id = "world"
         fb.pose.position.x, fb.pose.position.y, fb.pose.position.z = target
         fb.pose.orientation.z, fb.pose.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
-        for _ in range(3):
+        # As rviz does while the box is dragged: a POSE_UPDATE every 0.1 s (the server ignores a new client's
+        # feedback within 1 s of the marker's creation, so the first ones may be dropped).
+        deadline = time.time() + 10.0
+        while not self.poses and time.time() < deadline:
             fb.header.stamp = rospy.Time.now()
             feedback_pub.publish(fb)
             time.sleep(0.1)
