@@ -7,7 +7,7 @@ The marker starts at the ROV's present pose (the TF frame ~rov_frame, default "<
 cable node broadcasts it; ~initial_position [m] if that frame does not appear within ~wait s). Nothing is
 published until the marker is first moved, so it never fights another pose source; from then on the last
 pose is republished at ~rate Hz with fresh stamps (the cable node treats an old pose as stale). Drag the
-yellow box in the view plane, the arrows along the world axes, the ring to turn the ROV about the vertical.
+translucent box in the view plane, the arrows along the world axes, the ring to turn the ROV about the vertical.
 
 Parameters: ~world_frame (default "world"), ~rov_frame, ~initial_position ([x, y, z], default [0, 0, -50]),
 ~wait (s, default 10), ~rate (Hz, default 20), ~scale (m, default 3: the marker's size).
@@ -64,8 +64,10 @@ def make_marker(world_frame, pose, scale):
     m.scale = scale
     box = Marker()
     box.type = Marker.CUBE
-    box.scale.x, box.scale.y, box.scale.z = 0.45 * scale, 0.3 * scale, 0.25 * scale
-    box.color.r, box.color.g, box.color.b, box.color.a = 1.0, 0.85, 0.1, 0.5
+    # A translucent shell a little larger than the ROV's default shape (ros.rov_size 2 x 1.4 x 1.2 m at the
+    # default scale of 3 m), so the ROV stays visible inside the handle.
+    box.scale.x, box.scale.y, box.scale.z = 0.8 * scale, 0.55 * scale, 0.5 * scale
+    box.color.r, box.color.g, box.color.b, box.color.a = 0.3, 0.8, 1.0, 0.3
     drag = InteractiveMarkerControl()
     drag.name = "move_3d"
     drag.interaction_mode = InteractiveMarkerControl.MOVE_3D
@@ -110,6 +112,7 @@ class RovTargetMarker:
             rospy.logwarn_throttle(5.0, "rov_target_marker: ignored a non-finite pose")
             return
         self.pose = feedback.pose
+        self.server.applyChanges()  # the marker's new pose to every rviz (the dragging one has it already)
         self.publish()
 
     def republish(self, _event):

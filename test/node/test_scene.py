@@ -5,7 +5,8 @@ Markers: 5 of the line, 8 of the bodies, one CYLINDER per link (ns cable_tube) w
 diameter of the link's section (0.04 m for links 1-4, 0.02 m for 5-10: the config's numbers), whose length is
 the distance between the line's points k and k+1 and whose axis runs between them (the line marker is
 computed from the same snapshot, so they agree to rounding: 1e-9 m); the vessel's hull and the ROV's body
-at the configured sizes in their own frames; the A-frame's top at the hang-off point; every number finite.
+at the configured sizes in their own frames, the hull afloat on the vessel's origin, the A-frame from the deck to
+the hang-off point; every number finite.
 Interactive marker: it starts at the ROV's TF pose, and a moved marker (a POSE_UPDATE on its feedback topic,
 as rviz sends one) is published on rov_pose and becomes the ROV frame's pose."""
 import math
@@ -103,7 +104,11 @@ class Scene(unittest.TestCase):
         self.assertEqual((aframe.type, aframe.header.frame_id, len(aframe.points)), (Marker.LINE_LIST, "scene/vessel", 6))
         tops = np.array([[p.x, p.y, p.z] for p in aframe.points[4:6]])
         np.testing.assert_allclose(tops.mean(axis=0), HANG_OFF, atol=1e-12)  # the sheave: the cable's base
-        self.assertLess(hull.pose.position.z + 0.5 * hull.scale.z, HANG_OFF[2], "the deck lies below the sheave")
+        # Afloat: the vessel's origin on the waterline, 40 % of the hull below it; the A-frame's feet on the deck.
+        self.assertAlmostEqual(hull.pose.position.z - 0.5 * hull.scale.z, -0.4 * VESSEL_SIZE[2], delta=1e-12)
+        deck = hull.pose.position.z + 0.5 * hull.scale.z
+        self.assertAlmostEqual(aframe.points[0].z, deck, delta=1e-12)
+        self.assertAlmostEqual(aframe.points[2].z, deck, delta=1e-12)
         body, = self.by_ns("rov_body")
         self.assertEqual((body.type, body.header.frame_id), (Marker.CUBE, "scene/rov"))
         self.assertEqual([body.scale.x, body.scale.y, body.scale.z], ROV_SIZE)

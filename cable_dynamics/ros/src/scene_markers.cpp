@@ -9,7 +9,7 @@ namespace cable_dynamics {
 namespace {
 
 // Proportions of the shapes, as fractions of the configured sizes: only how they look.
-constexpr double kAFrameHeightPerDepth = 1.25;  ///< A-frame height / hull depth [-]
+constexpr double kFreeboard = 0.6;              ///< deck above the waterline / hull depth [-]
 constexpr double kSternOverhang = 0.06;         ///< sheave aft of the stern / hull length [-]
 constexpr double kAFrameHalfWidth = 0.35;       ///< A-frame legs off the sheave / beam [-]
 constexpr double kThrusterDiameter = 0.3;       ///< thruster diameter / ROV height [-]
@@ -66,12 +66,14 @@ std_msgs::ColorRGBA tensionColor(double tension, double scale) {
 void prepareBodyMarkers(const CableParams& params, const BodyShapes& shapes, const std::string& vessel_frame,
                         const std::string& rov_frame, visualization_msgs::Marker* markers) {
   using visualization_msgs::Marker;
-  // The vessel (x forward, y to port, z up): the A-frame's sheave at the hang-off point, its feet on the
-  // deck at the stern, the hull forward of it.
+  // The vessel (x forward, y to port, z up; its origin on the waterline): the hull floats with 60 % of its
+  // depth above the water, the A-frame's feet stand on the deck at the stern and its sheave is the hang-off
+  // point, so the cable leaves the sheave (below the deck, e.g. the default hang-off at the origin, the
+  // frame reaches down to it like a stern davit).
   const Eigen::Vector3d& top = params.base.hang_off;
   const double length = shapes.vessel_size.x(), beam = shapes.vessel_size.y(), depth = shapes.vessel_size.z();
-  const double deck = top.z() - kAFrameHeightPerDepth * depth;  // [m]
-  const double stern = top.x() + kSternOverhang * length;       // [m]
+  const double deck = kFreeboard * depth;                 // [m]
+  const double stern = top.x() + kSternOverhang * length;  // [m]
   Marker& hull = markers[0];
   start(hull, vessel_frame, "vessel_hull", 0, Marker::CUBE, rgb(0.45f, 0.5f, 0.58f));
   setPoint(hull.pose.position, {stern + 0.5 * length, 0.0, deck - 0.5 * depth});

@@ -28,8 +28,9 @@ struct BodyShapes {
 
 /// Markers of the vessel (3) and the ROV (5): vessel_hull, vessel_deckhouse, vessel_aframe (LINE_LIST),
 /// rov_body, rov_thrusters (ids 0..3, CYLINDER). Constant in the bodies' frames `vessel_frame` and
-/// `rov_frame`; the A-frame's top is the hang-off point (params.base.hang_off), the deck one A-frame
-/// height below it and the stern under the top, so the cable leaves the A-frame's sheave.
+/// `rov_frame`. The vessel's origin is on its waterline (the hull 40 % below, 60 % above it); the A-frame's
+/// feet stand on the deck at the stern and its top is the hang-off point (params.base.hang_off), so the
+/// cable leaves the A-frame's sheave.
 constexpr int kSceneMarkerCount = 8;
 void prepareBodyMarkers(const CableParams& params, const BodyShapes& shapes, const std::string& vessel_frame,
                         const std::string& rov_frame, visualization_msgs::Marker* markers);
