@@ -6,7 +6,7 @@ diameter of the link's section (0.04 m for links 1-4, 0.02 m for 5-10: the confi
 the distance between the line's points k and k+1 and whose axis runs between them (the line marker is
 computed from the same snapshot, so they agree to rounding: 1e-9 m); the vessel's hull and the ROV's body
 at the configured sizes in their own frames, the hull afloat on the vessel's origin, the A-frame from the deck to
-the hang-off point; every number finite.
+the hang-off point; every number finite; with a winch, the drum's slots deleted (action DELETE).
 Interactive marker: it starts at the ROV's TF pose, and a moved marker (a POSE_UPDATE on its feedback topic,
 as rviz sends one) is published on rov_pose and becomes the ROV frame's pose."""
 import math
@@ -93,6 +93,20 @@ class Scene(unittest.TestCase):
             np.testing.assert_allclose(centre, 0.5 * (a + b), atol=1e-9)
             np.testing.assert_allclose(z_axis(m.pose.orientation), (b - a) / np.linalg.norm(b - a), atol=1e-9)
             self.assertTrue(0.0 <= m.color.r <= 1.0 and 0.0 <= m.color.g <= 1.0 and 0.0 <= m.color.b <= 1.0)
+
+    def test_drum_slots_have_no_cylinder(self):
+        got = {}
+        sub = rospy.Subscriber("/scene_winch/cable_markers", MarkerArray, lambda m: got.update(m=m))
+        self.assertTrue(wait_for(lambda: "m" in got, 30.0), "no cable_markers from the winch's node")
+        sub.unregister()
+        markers = got["m"].markers
+        self.assertEqual(len(markers), 5 + 8 + 21)
+        self.assertTrue(all(finite_marker(m) for m in markers))
+        tube = sorted((m for m in markers if m.ns == "cable_tube"), key=lambda m: m.id)
+        self.assertEqual([m.action for m in tube], [Marker.DELETE] * 11 + [Marker.ADD] * 10)
+        for m in tube[11:]:
+            self.assertEqual(m.scale.x, 0.03)  # winch_test.yaml's diameter
+            self.assertAlmostEqual(m.scale.z, 2.0, delta=1e-6)
 
     def test_vessel_and_rov_shapes(self):
         hull, = self.by_ns("vessel_hull")
