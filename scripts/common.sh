@@ -18,7 +18,7 @@ DEB_PACKAGES=(
   python3-sympy python3-numpy python3-scipy python3-pytest python3-yaml python3-matplotlib libmujoco-dev
   libtf2-eigen-dev libtinyxml-dev rviz xvfb imagemagick python3-tf2-ros python3-diagnostic-msgs
   python3-visualization-msgs python3-rosgraph-msgs python3-rosmsg python3-roslaunch python3-rosunit python3-roslib
-  python3-rosgraph
+  python3-rosgraph pybind11-dev python3-pybind11 python3-interactive-markers
 )
 
 # Installs the Debian packages that are missing (apt-get update first), as root or through sudo.

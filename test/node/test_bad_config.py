@@ -93,6 +93,8 @@ CASES = [
     ("tension_scale_negative", ros(tension_scale=-5.0), "ros.tension_scale"),
     ("diagnostics_period_zero", ros(diagnostics_period=0.0), "ros.diagnostics_period"),
     ("max_lag_zero", ros(max_lag=0.0), "ros.max_lag"),
+    ("vessel_size_zero", ros(vessel_size=[30.0, 0.0, 4.0]), "ros.vessel_size[1]"),
+    ("rov_size_short", ros(rov_size=[2.0, 1.4]), "ros.rov_size"),
     ("unknown_ros_key", ros(rat=10.0), "ros.rat"),
     ("ros_not_a_map", with_cable({"ros": 3}), "ros"),
 ]

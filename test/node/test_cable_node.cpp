@@ -168,7 +168,7 @@ TEST_F(CableNodeTest, EveryTfFrameResolves) {
 
 TEST_F(CableNodeTest, MarkerArrayIsComplete) {
   const auto& m = outputs->markers.markers;
-  ASSERT_EQ(m.size(), 5u);
+  ASSERT_EQ(m.size(), 5u + 8u + kLinks);  // the line's five, the bodies' eight, a cylinder per link (scene.test)
   EXPECT_EQ(m[0].ns, "cable");
   EXPECT_EQ(m[0].type, visualization_msgs::Marker::LINE_STRIP);
   EXPECT_EQ(m[0].points.size(), kLinks + 1u);

@@ -78,7 +78,7 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   // fixed model while links come off and go back onto the drum: a slot on the drum (zero length and mass
   // in the simulator) is in it at the length and mass it has once paid out.
   nh_.setParam("robot_description", cableUrdf(deriveLinkProperties(params_), names_));
-  prepareOutputs(params_, names_, options_.world_frame, outputs_);
+  prepareOutputs(params_, names_, options_.world_frame, outputs_, options_.shapes);
   source_.spring_force = Eigen::VectorXd::Zero(3 * params_.links);
   source_.alpha_hint = Eigen::VectorXd::Zero(params_.links);
 

@@ -18,7 +18,19 @@ constexpr double kRetriedShareError = 0.5;
 /// A lag above this makes the diagnostics a WARN [s].
 constexpr double kLagWarning = 0.1;
 
-enum MarkerIndex { kCableLine = 0, kLoadSphere = 1, kBaseArrow = 2, kLoadArrow = 3, kScaleText = 4, kMarkerCount = 5 };
+/// The marker array: the cable's line and the load, the force arrows, the scale (kLineMarkers of them), the
+/// vessel's and the ROV's shapes (scene_markers.h), then one cylinder per slot (the cable at its diameter).
+/// A seabed would take its place after the bodies (scene_markers.h, "Seabed hook").
+enum MarkerIndex {
+  kCableLine = 0,
+  kLoadSphere = 1,
+  kBaseArrow = 2,
+  kLoadArrow = 3,
+  kScaleText = 4,
+  kLineMarkers = 5,
+  kBodyFirst = kLineMarkers,
+  kTubeFirst = kBodyFirst + kSceneMarkerCount
+};
 
 void setVector(geometry_msgs::Vector3& m, const Eigen::Vector3d& v) {
   m.x = v.x();
@@ -38,21 +50,6 @@ void setPose(geometry_msgs::Transform& t, const Eigen::Vector3d& p, const Eigen:
   t.rotation.y = q.y();
   t.rotation.z = q.z();
   t.rotation.w = q.w();
-}
-
-/// Blue (slack) through green to red (the top of the scale); compression in grey.
-std_msgs::ColorRGBA tensionColor(double tension, double scale) {
-  std_msgs::ColorRGBA c;
-  c.a = 1.0;
-  if (tension < 0.0) {
-    c.r = c.g = c.b = 0.6f;
-    return c;
-  }
-  const double f = std::clamp(tension / scale, 0.0, 1.0);
-  c.r = static_cast<float>(std::clamp(2.0 * f - 1.0, 0.0, 1.0));
-  c.g = static_cast<float>(1.0 - std::abs(2.0 * f - 1.0));
-  c.b = static_cast<float>(std::clamp(1.0 - 2.0 * f, 0.0, 1.0));
-  return c;
 }
 
 /// The diagnostics' key-value pairs, in this order (values written by index).
@@ -90,7 +87,7 @@ void format(std::string& out, const char* pattern, double value) {
 }  // namespace
 
 void prepareOutputs(const CableParams& params, const CableFrameNames& names, const std::string& world_frame,
-                    CableOutputs& out) {
+                    CableOutputs& out, const BodyShapes& shapes) {
   const int n = params.links, dof = 3 * n;
   out.joints.name.resize(dof);
   for (int i = 0; i < dof; ++i) out.joints.name[i] = names.joint(i);
@@ -110,13 +107,14 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   out.transforms.back().child_frame_id = names.load();
   for (std::size_t i = 1; i < out.transforms.size(); ++i) out.transforms[i].header.frame_id = names.paper();
 
-  // Markers: the cable coloured by tension, the load, force arrows at both ends, the colour scale.
-  out.markers.markers.resize(kMarkerCount);
-  const char* const kNamespaces[kMarkerCount] = {"cable", "load", "base_force", "load_force", "tension_scale"};
-  const int kTypes[kMarkerCount] = {visualization_msgs::Marker::LINE_STRIP, visualization_msgs::Marker::SPHERE,
+  // Markers: the cable coloured by tension, the load, force arrows at both ends, the colour scale; the
+  // bodies; the cable at its diameter.
+  out.markers.markers.resize(kTubeFirst + n);
+  const char* const kNamespaces[kLineMarkers] = {"cable", "load", "base_force", "load_force", "tension_scale"};
+  const int kTypes[kLineMarkers] = {visualization_msgs::Marker::LINE_STRIP, visualization_msgs::Marker::SPHERE,
                                     visualization_msgs::Marker::ARROW, visualization_msgs::Marker::ARROW,
                                     visualization_msgs::Marker::TEXT_VIEW_FACING};
-  for (int i = 0; i < kMarkerCount; ++i) {
+  for (int i = 0; i < kLineMarkers; ++i) {
     visualization_msgs::Marker& m = out.markers.markers[i];
     m.header.frame_id = names.paper();
     m.ns = kNamespaces[i];
@@ -149,6 +147,8 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   text.scale.z = std::max(0.5, 0.03 * length);
   text.color.r = text.color.g = text.color.b = 1.0;
   text.text.reserve(160);
+  prepareBodyMarkers(params, shapes, names.vessel(), names.rov(), &out.markers.markers[kBodyFirst]);
+  prepareTubeMarkers(params, names.paper(), &out.markers.markers[kTubeFirst]);
 
   out.state.tension.assign(n, 0.0);
   out.state.seabed_force.assign(params.seabed.enabled ? n : 0, 0.0);
@@ -278,6 +278,7 @@ void fillMarkers(const OutputSource& source, double total_length, double tension
   label.text = text;
   label.pose.position.x = c.ends(0, first) - 0.3 * total_length;
   label.pose.position.z = c.ends(2, first) + 0.1 * total_length;
+  fillTubeMarkers(source, tension_scale, &msg.markers[kTubeFirst]);
   for (auto& m : msg.markers) m.header.stamp = stamp;
 }
 

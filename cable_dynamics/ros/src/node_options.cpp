@@ -29,6 +29,13 @@ NodeOptions parseNodeOptions(const YAML::Node& ros_section, const std::string& d
   o.max_lag = ros.number("max_lag", o.max_lag, 0.01, 3600.0, false, "s");
   o.tension_scale = ros.number("tension_scale", o.tension_scale, 0.0, 1e9, false, "N");
   o.diagnostics_period = ros.number("diagnostics_period", o.diagnostics_period, 0.01, 3600.0, false, "s");
+  // The rviz shapes of the two bodies (scene_markers.h): drawing only.
+  for (auto [key, size] : {std::pair<const char*, Eigen::Vector3d*>{"vessel_size", &o.shapes.vessel_size},
+                           std::pair<const char*, Eigen::Vector3d*>{"rov_size", &o.shapes.rov_size}}) {
+    if (!ros.has(key)) continue;
+    const std::vector<double> v = ros.numberList(key, 3, 0.0, 1000.0, true, "m");
+    *size = Eigen::Vector3d(v[0], v[1], v[2]);
+  }
   ros.rejectUnknownKeys();
   return o;
 }

@@ -15,6 +15,7 @@
 
 #include "cable_dynamics/params/cable_params.h"
 #include "cable_dynamics/ros/output_source.h"
+#include "cable_dynamics/ros/scene_markers.h"
 #include "cable_dynamics/urdf/cable_urdf.h"
 
 namespace cable_dynamics {
@@ -25,7 +26,9 @@ namespace cable_dynamics {
 struct CableOutputs {
   sensor_msgs::JointState joints;                           ///< 3 per deployed link, slot order
   std::vector<geometry_msgs::TransformStamped> transforms;  ///< world -> paper, 3 per deployed link, the load
-  visualization_msgs::MarkerArray markers;                  ///< cable, load, base_force, load_force, tension_scale
+  /// cable (line), load, base_force, load_force, tension_scale, the vessel's and the ROV's shapes, then
+  /// cable_tube: one cylinder per slot (scene_markers.h)
+  visualization_msgs::MarkerArray markers;
   cable_msgs::CableState state;
   /// The cable's force on the ROV and its moment about the ROV's origin, in the ROV's frame (rov_wrench);
   /// the force alone at the load, in world axes (rov_wrench_world).
@@ -73,10 +76,11 @@ struct NodeStatus {
   WinchStatus winch;
 };
 
-/// Sizes and names every message once: 3n joints, 2 + 3n transforms, 5 markers, n tensions (capacity for
-/// every slot), then shapes them for the configured deployment (shapeOutputs(params.winch.stored_links)).
+/// Sizes and names every message once: 3n joints, 2 + 3n transforms, 5 + kSceneMarkerCount + n markers (the
+/// bodies drawn at `shapes`' sizes), n tensions (capacity for every slot), then shapes them for the
+/// configured deployment (shapeOutputs(params.winch.stored_links)).
 void prepareOutputs(const CableParams& params, const CableFrameNames& names, const std::string& world_frame,
-                    CableOutputs& out);
+                    CableOutputs& out, const BodyShapes& shapes = BodyShapes());
 /// Shapes the messages for the deployed slots [first_link, n): 3 (n - first_link) joints, 2 + 3 (n -
 /// first_link) transforms, n - first_link + 1 points of the cable's line. Names and frames move between the
 /// messages and the stowed lists, one slot at a time, within the capacity reserved by prepareOutputs: no
@@ -94,8 +98,9 @@ void fillJointState(const OutputSource& source, const ros::Time& stamp, sensor_m
 /// load frame (axes parallel to the world frame).
 void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
                     std::vector<geometry_msgs::TransformStamped>& transforms);
-/// Markers: the deployed cable coloured by tension against `tension_scale` [N], the load, the force arrows,
-/// the scale.
+/// Markers: the deployed cable coloured by tension against `tension_scale` [N] (as a line and as cylinders
+/// of its diameter; the drum's slots deleted), the load, the force arrows, the scale. The bodies' markers
+/// are constant in their frames: only their stamps change.
 void fillMarkers(const OutputSource& source, double total_length, double tension_scale, const ros::Time& stamp,
                  visualization_msgs::MarkerArray& msg);
 /// cable_state: tensions (per slot), forces (world frame), energies, the winch, timing and counters.

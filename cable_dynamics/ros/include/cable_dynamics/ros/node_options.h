@@ -10,6 +10,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/ros/scene_markers.h"
 
 namespace cable_dynamics {
 
@@ -24,6 +25,7 @@ struct NodeOptions {
   double max_lag = 1.0;            ///< simulated time behind the clock beyond this is dropped (and reported) [s]
   double tension_scale = 0.0;      ///< colour scale top [N]; 0 = the largest tension seen so far
   double diagnostics_period = 1.0;  ///< [s]
+  BodyShapes shapes;                ///< rviz sizes of the vessel and the ROV (`vessel_size`, `rov_size`) [m]
 };
 
 /// Validates the `ros` section of a parameter tree (absent: all defaults). `default_prefix` is the

@@ -1,0 +1,14 @@
+# The Python module `cable_dynamics` (pybind11 from Debian: pybind11-dev). Included from the root
+# CMakeLists.txt. Built into the devel space's python directory, so `import cable_dynamics` works after
+# `source devel/setup.bash`, and installed into the install space's.
+find_package(pybind11 CONFIG REQUIRED)
+pybind11_add_module(cable_dynamics_python MODULE
+  ${CMAKE_CURRENT_LIST_DIR}/src/module.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/python_simulator.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/config_from_python.cpp
+)
+target_link_libraries(cable_dynamics_python PRIVATE cable_dynamics_core)
+set_target_properties(cable_dynamics_python PROPERTIES
+  OUTPUT_NAME cable_dynamics
+  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_PYTHON_DESTINATION})
+install(TARGETS cable_dynamics_python LIBRARY DESTINATION ${CATKIN_GLOBAL_PYTHON_DESTINATION})

@@ -1,0 +1,125 @@
+/// \file
+/// \brief The Python module `cable_dynamics`: the simulator built from a config file or a dict, stepped,
+///        read as numpy arrays, driven through its inputs. A thin layer over python_simulator.h.
+
+#include <string>
+#include <vector>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "cable_dynamics/params/config_loader.h"
+#include "config_from_python.h"
+#include "python_simulator.h"
+
+namespace py = pybind11;
+using namespace pybind11::literals;  // "name"_a; a .cpp, not a header
+
+namespace cable_dynamics {
+namespace python {
+namespace {
+
+PythonSimulator* fromFile(const std::string& path, const std::vector<std::string>& overrides) {
+  return new PythonSimulator(loadConfigFile(path, overrides));
+}
+
+PythonSimulator* fromDict(const py::dict& config, const std::vector<std::string>& overrides) {
+  YAML::Node root = toYaml(config);
+  for (const std::string& o : overrides) applyOverride(root, o);
+  return new PythonSimulator(parseConfig(root));
+}
+
+const Eigen::Vector3d kZero = Eigen::Vector3d::Zero();
+const Eigen::Vector4d kIdentity(0.0, 0.0, 0.0, 1.0);  // x, y, z, w
+
+}  // namespace
+}  // namespace python
+}  // namespace cable_dynamics
+
+PYBIND11_MODULE(cable_dynamics, m) {
+  using namespace cable_dynamics;
+  using namespace cable_dynamics::python;
+  m.doc() =
+      "The n-link umbilical of cable_dynamics (Gomes et al. 2016) from Python. Build a Simulator from a config "
+      "file or a dict (the keys of README.md, 'Configuration'), step it, read snapshots and the model's "
+      "matrices as numpy arrays, set the current, the targets and the winch. Outputs are in the paper frame "
+      "(base at the origin, z down); inputs in world axes (z up) from the base's rest position.";
+
+  // A bad config value: the message names the key, the value and the allowed range.
+  py::register_exception<ConfigError>(m, "ConfigError", PyExc_ValueError);
+
+  py::class_<Snapshot>(m, "Snapshot", "One instant (SI units, paper frame: base at the origin, z down).")
+      .def_readonly("time", &Snapshot::time, "simulated time since reset [s]")
+      .def_readonly("q", &Snapshot::q, "(3n) paper coordinates [rad]")
+      .def_readonly("qd", &Snapshot::qd, "(3n) their rates [rad/s]")
+      .def_readonly("link_ends", &Snapshot::link_ends, "(n+1, 3) the base, then each link's far end [m]")
+      .def_readonly("axes", &Snapshot::axes, "(n, 3) unit axis of each link, base end to far end")
+      .def_readonly("tension", &Snapshot::tension, "(n) force along each link at its base end [N], 0 on a drum")
+      .def_readonly("line_pull", &Snapshot::line_pull, "tension at the top (the winch) [N]")
+      .def_readonly("load_force", &Snapshot::load_force, "(3) force the cable exerts on the load [N]")
+      .def_readonly("base_force", &Snapshot::base_force, "(3) force the cable exerts on the base [N]")
+      .def_readonly("coupling_force", &Snapshot::coupling_force, "(3) PD force of the anchor / ROV on the load [N]")
+      .def_readonly("kinetic_energy", &Snapshot::kinetic_energy, "[J]")
+      .def_readonly("potential_energy", &Snapshot::potential_energy, "gravity minus buoyancy [J]")
+      .def_readonly("elastic_energy", &Snapshot::elastic_energy, "joint springs [J]")
+      .def_readonly("dissipated_energy", &Snapshot::dissipated_energy, "since reset [J]")
+      .def_readonly("work_input", &Snapshot::work_input, "done by the moving base and the coupling [J]")
+      .def_readonly("total_energy", &Snapshot::total_energy, "the balance, constant up to the integrator [J]")
+      .def_readonly("first_link", &Snapshot::first_link, "slots before it are on the winch's drum")
+      .def_readonly("deployed_length", &Snapshot::deployed_length, "[m]")
+      .def_readonly("winch_speed", &Snapshot::winch_speed, "+ paying out [m/s]");
+
+  py::class_<ModelTerms>(m, "Model", "M q'' + h + G + elastic + D q' = Q at one state (paper coordinates).")
+      .def_readonly("coordinates", &ModelTerms::coordinates, "(3n) names, joint_K_elevation/azimuth/torsion")
+      .def_readonly("q", &ModelTerms::q, "(3n) [rad]")
+      .def_readonly("qd", &ModelTerms::qd, "(3n) [rad/s]")
+      .def_readonly("M", &ModelTerms::M, "(3n, 3n) mass matrix [kg m^2]")
+      .def_readonly("h", &ModelTerms::h, "(3n) Coriolis and centrifugal terms [N m]")
+      .def_readonly("G", &ModelTerms::G, "(3n) generalized weight [N m]")
+      .def_readonly("K", &ModelTerms::K, "(3n, 3n) stiffness [N m/rad]")
+      .def_readonly("elastic", &ModelTerms::elastic, "(3n) generalized elastic force [N m]")
+      .def_readonly("D", &ModelTerms::D, "(3n, 3n) damping [N m s/rad]")
+      .def_readonly("kinetic_energy", &ModelTerms::kinetic_energy, "[J]")
+      .def_readonly("potential_energy", &ModelTerms::potential_energy, "[J]")
+      .def_readonly("elastic_energy", &ModelTerms::elastic_energy, "[J]");
+
+  py::class_<PythonSimulator>(m, "Simulator", "A cable simulator (cable_dynamics::CableSimulator).")
+      .def_static("from_file", &fromFile, "path"_a, "overrides"_a = std::vector<std::string>{},
+                  "From a YAML config file; overrides like cable_sim --set: ['cable.links=10', ...].")
+      .def_static("from_dict", &fromDict, "config"_a, "overrides"_a = std::vector<std::string>{},
+                  "From a dict of the config file's keys (checked the same way).")
+      .def("step", &PythonSimulator::step, "steps"_a = 1, py::call_guard<py::gil_scoped_release>(),
+           "Advances `steps` time steps of dt; RuntimeError when a step fails. Returns the substeps taken.")
+      .def_property_readonly("time", &PythonSimulator::time, "[s]")
+      .def_property_readonly("dt", &PythonSimulator::dt, "[s]")
+      .def_property_readonly("links", &PythonSimulator::links, "n (every slot with a winch)")
+      .def_property_readonly("coordinates", &PythonSimulator::coordinates, "(3n) coordinate names")
+      .def_property_readonly("has_winch", &PythonSimulator::hasWinch)
+      .def_property_readonly("energy_drift", &PythonSimulator::energyDrift,
+                             "drift of the energy balance as a fraction of the energy scale (RK4; -1 otherwise)")
+      .def_property_readonly("retried_steps", &PythonSimulator::retriedSteps)
+      .def("stable_time_step", &PythonSimulator::stableTimeStep, "the largest stable RK4 dt estimate [s]")
+      .def("snapshot", &PythonSimulator::snapshot, "The present instant as a Snapshot (numpy arrays).")
+      .def("model", &PythonSimulator::model, "The paper model's matrices at the present state.")
+      .def("set_state", &PythonSimulator::setState, "q"_a, "qd"_a, "Paper coordinates (3n) [rad], rates [rad/s].")
+      .def("reset", &PythonSimulator::reset, "Back to the configured state and inputs at t = 0.")
+      .def(
+          "reset_to_equilibrium",
+          [](PythonSimulator& s) {
+            const StaticSolution solution = s.resetToEquilibrium();
+            return py::dict("iterations"_a = solution.iterations, "residual"_a = solution.residual);
+          },
+          "At rest in the static equilibrium for the present inputs; RuntimeError with the reason if none.")
+      .def("set_current", &PythonSimulator::setCurrent, "current"_a, "Uniform current, world axes (z up) [m/s].")
+      .def("set_load_target", &PythonSimulator::setLoadTarget, "position"_a, "velocity"_a = kZero,
+           "attitude"_a = kIdentity,
+           "The ROV's attachment point [m] and velocity [m/s] (world axes from the base's rest position) and "
+           "attitude (quaternion x, y, z, w); load.mode anchored or attached.")
+      .def("set_base_target", &PythonSimulator::setBaseTarget, "position"_a, "velocity"_a = kZero,
+           "attitude"_a = kIdentity, "The vessel's hang-off point, velocity and attitude, as set_load_target.")
+      .def("command_winch_speed", &PythonSimulator::commandWinchSpeed, "speed"_a,
+           "Winch speed [m/s], + pays out, |speed| <= winch.max_speed.")
+      .def("command_winch_length", &PythonSimulator::commandWinchLength, "length"_a,
+           "Drive the winch to a deployed length [m] in [winch.min_length, winch.max_length].");
+}

@@ -1,0 +1,167 @@
+#include "python_simulator.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+#include "cable_dynamics/dynamics/paper_model.h"
+
+namespace cable_dynamics {
+namespace python {
+namespace {
+
+/// The node's limits on the same inputs (ros/input_guard.h): positions within 1e6 m, speeds within 20 m/s,
+/// the current within 100 m/s (the config's range for fluid.current).
+constexpr double kMaxPosition = 1e6;   // [m]
+constexpr double kMaxSpeed = 20.0;     // [m/s]
+constexpr double kMaxCurrent = 100.0;  // [m/s]
+
+template <class Vector>
+std::string describe(const Vector& v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "[";
+  for (int i = 0; i < v.size(); ++i) s << (i ? ", " : "") << v(i);
+  s << "]";
+  return s.str();
+}
+
+/// Throws std::invalid_argument unless every component of `v` is finite with |v_i| <= limit.
+template <class Vector>
+void checkComponents(const char* name, const Vector& v, double limit, const char* unit) {
+  if (!v.allFinite() || v.cwiseAbs().maxCoeff() > limit) {
+    std::ostringstream s;
+    s << name << " = " << describe(v) << ": expected finite components within +-" << limit << " " << unit;
+    throw std::invalid_argument(s.str());
+  }
+}
+
+Eigen::Quaterniond attitude(const char* name, const Eigen::Vector4d& xyzw) {
+  const double norm = xyzw.norm();
+  if (!xyzw.allFinite() || norm < 1e-6) {
+    throw std::invalid_argument(std::string(name) + " = " + describe(xyzw) +
+                                ": expected a finite quaternion (x, y, z, w) of non-zero length");
+  }
+  return Eigen::Quaterniond(xyzw(3), xyzw(0), xyzw(1), xyzw(2)).normalized();
+}
+
+}  // namespace
+
+PythonSimulator::PythonSimulator(const CableParams& params) : params_(params), sim_(params_) {}
+
+long PythonSimulator::step(long steps) {
+  if (steps < 1) throw std::invalid_argument("steps = " + std::to_string(steps) + ": expected at least 1");
+  long substeps = 0;
+  for (long i = 0; i < steps; ++i) {
+    const StepReport report = sim_.step();
+    if (!report.ok) throw std::runtime_error(report.message);
+    substeps += report.substeps;
+  }
+  return substeps;
+}
+
+std::vector<std::string> PythonSimulator::coordinates() const { return coordinateNames(links()); }
+
+Snapshot PythonSimulator::snapshot() {
+  sim_.snapshot(snapshot_);
+  const SimulationSnapshot& s = snapshot_;
+  Snapshot out;
+  out.time = s.time;
+  out.q = s.q;
+  out.qd = s.qd;
+  out.link_ends = s.chain.ends.transpose();
+  out.axes = s.axes.transpose();
+  out.tension = s.chain.tension;
+  out.line_pull = s.line_pull;
+  out.load_force = s.chain.load_force;
+  out.base_force = s.chain.base_force;
+  out.coupling_force = s.chain.coupling_force;
+  out.kinetic_energy = s.chain.kinetic_energy;
+  out.potential_energy = s.chain.potential_energy;
+  out.elastic_energy = s.chain.elastic_energy;
+  out.dissipated_energy = s.dissipated_energy;
+  out.work_input = s.work_input;
+  out.total_energy = s.total_energy;
+  out.first_link = s.first_link;
+  out.deployed_length = s.deployed_length;
+  out.winch_speed = s.winch_speed;
+  return out;
+}
+
+ModelTerms PythonSimulator::model() {
+  ModelTerms out;
+  out.coordinates = coordinates();
+  out.q.resize(3 * links());
+  out.qd.resize(3 * links());
+  sim_.paperCoordinates(out.q, out.qd);
+  const PaperModelTerms t = paperModelAt(sim_.properties(), out.q, out.qd);
+  out.M = t.M;
+  out.h = t.h;
+  out.G = t.G;
+  out.K = t.K;
+  out.elastic = t.elastic;
+  out.D = t.D;
+  out.kinetic_energy = t.kinetic_energy;
+  out.potential_energy = t.potential_energy;
+  out.elastic_energy = t.elastic_energy;
+  return out;
+}
+
+void PythonSimulator::setState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+  sim_.setPaperState(q, qd);  // the core checks the sizes and finiteness, naming them
+}
+
+StaticSolution PythonSimulator::resetToEquilibrium() {
+  StaticSolution s = sim_.resetToEquilibrium();
+  if (!s.converged) throw std::runtime_error("no static equilibrium: " + s.message);
+  return s;
+}
+
+void PythonSimulator::setCurrent(const Eigen::Vector3d& current) {
+  checkComponents("current", current, kMaxCurrent, "m/s");
+  sim_.setCurrent(current);
+}
+
+void PythonSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                                    const Eigen::Vector4d& xyzw) {
+  checkComponents("position", position, kMaxPosition, "m");
+  checkComponents("velocity", velocity, kMaxSpeed, "m/s");
+  sim_.setLoadTarget(position, velocity, attitude("attitude", xyzw));
+}
+
+void PythonSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                                    const Eigen::Vector4d& xyzw) {
+  checkComponents("position", position, kMaxPosition, "m");
+  checkComponents("velocity", velocity, kMaxSpeed, "m/s");
+  sim_.setBaseTarget(position, velocity, attitude("attitude", xyzw));
+}
+
+void PythonSimulator::commandWinchSpeed(double speed) {
+  if (!sim_.hasWinch()) throw std::invalid_argument("winch speed: this cable has no winch (no winch: section)");
+  const double limit = params_.winch.max_speed;
+  if (!std::isfinite(speed) || std::abs(speed) > limit) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "speed = " << speed << ": expected a finite speed within +-" << limit << " m/s (winch.max_speed)";
+    throw std::invalid_argument(s.str());
+  }
+  sim_.commandWinchSpeed(speed);
+}
+
+void PythonSimulator::commandWinchLength(double length) {
+  if (!sim_.hasWinch()) throw std::invalid_argument("winch length: this cable has no winch (no winch: section)");
+  const WinchParams& w = params_.winch;
+  if (!std::isfinite(length) || length < w.min_length || length > w.max_length) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "length = " << length << ": expected a length in [" << w.min_length << ", " << w.max_length
+      << "] m (winch.min_length, winch.max_length)";
+    throw std::invalid_argument(s.str());
+  }
+  sim_.commandWinchLength(length);
+}
+
+}  // namespace python
+}  // namespace cable_dynamics

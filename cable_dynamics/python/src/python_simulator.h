@@ -1,0 +1,99 @@
+#pragma once
+/// \file
+/// \brief The simulator as Python sees it: a CableSimulator built from a config, with argument checks on
+///        every input (finite, in range, right size) and the outputs copied into shapes numpy users expect.
+///        No physics here: every number comes from the core.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+
+namespace cable_dynamics {
+namespace python {
+
+/// One instant, copied out of a SimulationSnapshot. Paper frame (base at the origin, z down) unless
+/// stated; rows are points or links, columns x, y, z.
+struct Snapshot {
+  double time = 0.0;               ///< [s] since reset
+  Eigen::VectorXd q, qd;           ///< (3n) paper coordinates [rad] and rates [rad/s]
+  Eigen::MatrixX3d link_ends;      ///< (n+1 x 3) base, then each link's far end (row n: the tip) [m]
+  Eigen::MatrixX3d axes;           ///< (n x 3) unit axis of each link, base end to far end [-]
+  Eigen::VectorXd tension;         ///< (n) force along each link at its base end, + pulls [N] (0 on a drum)
+  double line_pull = 0.0;          ///< tension at the winch / the top [N]
+  Eigen::Vector3d load_force;      ///< force the cable exerts on the load [N]
+  Eigen::Vector3d base_force;      ///< force the cable exerts on the base [N]
+  Eigen::Vector3d coupling_force;  ///< PD force of the anchor / ROV on the load [N]
+  double kinetic_energy = 0.0, potential_energy = 0.0, elastic_energy = 0.0;  ///< [J]
+  double dissipated_energy = 0.0, work_input = 0.0, total_energy = 0.0;       ///< [J]
+  int first_link = 0;              ///< slots before it are on the winch's drum
+  double deployed_length = 0.0;    ///< [m]
+  double winch_speed = 0.0;        ///< + paying out [m/s]
+};
+
+/// The paper model's terms at the present state (paperModelAt), sizes 3n and 3n x 3n.
+struct ModelTerms {
+  std::vector<std::string> coordinates;  ///< (3n) joint_K_elevation, joint_K_azimuth, joint_K_torsion
+  Eigen::VectorXd q, qd;                 ///< (3n) [rad], [rad/s]
+  Eigen::MatrixXd M;                     ///< mass matrix [kg m^2]
+  Eigen::VectorXd h;                     ///< Coriolis and centrifugal terms [N m]
+  Eigen::VectorXd G;                     ///< generalized weight (gravity minus buoyancy) [N m]
+  Eigen::MatrixXd K;                     ///< (tangent) stiffness [N m/rad]
+  Eigen::VectorXd elastic;               ///< generalized elastic force [N m]
+  Eigen::MatrixXd D;                     ///< damping [N m s/rad]
+  double kinetic_energy = 0.0, potential_energy = 0.0, elastic_energy = 0.0;  ///< [J]
+};
+
+/// Owns the parameters and the simulator. Every input is checked here and refused with
+/// std::invalid_argument (Python: ValueError) naming the argument, its value and the allowed range.
+class PythonSimulator {
+ public:
+  explicit PythonSimulator(const CableParams& params);
+
+  /// Advances `steps` time steps (>= 1). Throws std::runtime_error with the core's message when a step
+  /// fails (the state then stays at the last good step). Returns the substeps the steps took in all.
+  long step(long steps);
+
+  double time() const { return sim_.time(); }
+  double dt() const { return sim_.dt(); }
+  int links() const { return sim_.links(); }
+  const CableParams& params() const { return params_; }
+  std::vector<std::string> coordinates() const;
+
+  Snapshot snapshot();
+  ModelTerms model();
+  /// Paper coordinates (3n) [rad] and rates (3n) [rad/s].
+  void setState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
+
+  void reset() { sim_.reset(); }
+  /// Throws std::runtime_error with the solver's reason when there is no equilibrium.
+  StaticSolution resetToEquilibrium();
+
+  /// Uniform current, world axes (z up) [m/s]; each component finite and within 100 m/s.
+  void setCurrent(const Eigen::Vector3d& current);
+  /// The ROV's attachment point (load modes anchored / attached), world axes from the base's rest position
+  /// [m], its velocity [m/s], the ROV's attitude as a unit quaternion (x, y, z, w; normalized here).
+  void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, const Eigen::Vector4d& xyzw);
+  /// The vessel's hang-off point, as setLoadTarget.
+  void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, const Eigen::Vector4d& xyzw);
+  /// Winch speed [m/s], + pays out; |speed| <= winch.max_speed (refused beyond, not clamped, like the node).
+  void commandWinchSpeed(double speed);
+  /// Winch target length [m] in [winch.min_length, winch.max_length].
+  void commandWinchLength(double length);
+
+  bool hasWinch() const { return sim_.hasWinch(); }
+  double energyDrift() const { return sim_.energyDrift(); }
+  long retriedSteps() const { return sim_.retriedSteps(); }
+  double stableTimeStep() const { return sim_.estimateStableTimeStep(); }
+
+ private:
+  CableParams params_;
+  CableSimulator sim_;
+  SimulationSnapshot snapshot_;  ///< reused between calls
+};
+
+}  // namespace python
+}  // namespace cable_dynamics

@@ -1,0 +1,334 @@
+"""The Python module `cable_dynamics` (cable_dynamics/python/) against independent truths.
+
+What is checked, and against what:
+* the static tension of a hanging chain: the submerged weight below each link's base end, computed here
+  from the config's numbers (mass per length, diameter, water density, load), both at the vertical rest
+  state and after the static solver;
+* a single link in air swinging: the compound pendulum's period from its inertia about the pivot;
+* the model's matrices: the same as `cable_model`'s JSON at the same state (the C++ tool, no Python),
+  M, K, D symmetric and M positive definite;
+* the current: the equilibrium in a current along x and along y against the independent shooting solver
+  test/reference/static_current.py (knows nothing of the C++ code), which also checks the current's axes;
+* the winch: a speed command pays out by the ramp-and-cruise distance of the winch's acceleration law;
+* the README example (cable_dynamics/python/examples/current_sweep.py) is the README's text, runs through a
+  shell after `source devel/setup.bash` as a user would, and prints top tensions equal to the reference's;
+* bad input: a ValueError naming the argument or key, and its range.
+
+Environment: CABLE_MODEL_BIN (the built cable_model) and CABLE_DEVEL_SETUP (the devel space's setup.bash);
+the tests that need them fail, not skip, without them.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import cable_dynamics
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+EXAMPLE = os.path.join(REPO, "cable_dynamics", "python", "examples", "current_sweep.py")
+sys.path.insert(0, os.path.join(HERE, "reference"))
+import static_current  # noqa: E402
+
+G = 9.81
+RHO = 1025.0
+
+
+def required_env(name):
+    value = os.environ.get(name)
+    if not value:
+        pytest.fail(f"set {name} (test/tests.cmake does)")
+    return value
+
+
+def hanging_config(links=10, length=20.0, diameter=0.03, mass_per_length=1.5, load_mass=40.0, load_volume=0.01):
+    return {
+        "cable": {"links": links, "length": length, "diameter": diameter, "mass_per_length": mass_per_length},
+        "load": {"mass": load_mass, "volume": load_volume},
+        "fluid": {"density": RHO, "current": [0.0, 0.0, 0.0]},
+        "gravity": G,
+    }
+
+
+def submerged_weight_below(cfg):
+    """(n) the submerged weight below each link's base end [N], from the config's numbers alone."""
+    c, load = cfg["cable"], cfg["load"]
+    n, l = c["links"], c["length"] / c["links"]
+    link = (c["mass_per_length"] - RHO * math.pi * (c["diameter"] / 2) ** 2) * l * G  # [N]
+    tip = (load["mass"] - RHO * load["volume"]) * G
+    return np.array([tip + (n - k) * link for k in range(n)])
+
+
+# --- tension of a hanging chain -------------------------------------------------------------------
+
+def test_hanging_chain_tension_is_the_submerged_weight_below():
+    cfg = hanging_config()
+    expected = submerged_weight_below(cfg)
+    sim = cable_dynamics.Simulator.from_dict(cfg)
+    # At t = 0 the cable hangs straight down at rest (initial angles 0): nothing accelerates, so each
+    # link's base end carries what hangs below it. Sums of ~10 terms: 1e-12 relative is rounding.
+    s = sim.snapshot()
+    assert s.tension.shape == (10,)
+    np.testing.assert_allclose(s.tension, expected, rtol=1e-12)
+    assert s.line_pull == pytest.approx(expected[0], rel=1e-12)
+    # It stays so while stepped (1 s): vertical at rest is an equilibrium.
+    sim.step(1000)
+    assert sim.time == pytest.approx(1.0, abs=1e-12)
+    np.testing.assert_allclose(sim.snapshot().tension, expected, rtol=1e-9)
+    # The static solver gives the same (its residual tolerance is 1e-9 relative).
+    sim.reset_to_equilibrium()
+    np.testing.assert_allclose(sim.snapshot().tension, expected, rtol=1e-9)
+    # The link ends hang straight down, l apart (paper frame: z down).
+    ends = sim.snapshot().link_ends
+    assert ends.shape == (11, 3)
+    np.testing.assert_allclose(ends[:, 2], np.linspace(0.0, 20.0, 11), atol=1e-9)
+    np.testing.assert_allclose(ends[:, :2], 0.0, atol=1e-9)
+
+
+# --- stepping: the compound pendulum ----------------------------------------------------------------
+
+def test_single_link_swings_with_the_compound_pendulum_period():
+    length, diameter = 2.0, 0.02
+    theta0 = 0.05  # [rad]
+    cfg = {"cable": {"links": 1, "length": length, "diameter": diameter, "mass_per_length": 1.0},
+           "fluid": {"density": 0.0}, "gravity": G, "initial": {"elevation": theta0},
+           "simulation": {"dt": 0.0005}}
+    sim = cable_dynamics.Simulator.from_dict(cfg)
+    r = diameter / 2
+    # Solid cylinder about its end: m (l^2/3 + r^2/4); weight moment m g l/2; finite amplitude (1 + th^2/16).
+    period = 2 * math.pi * math.sqrt((length ** 2 / 3 + r ** 2 / 4) / (G * length / 2)) * (1 + theta0 ** 2 / 16)
+    times, values = [], []
+    while sim.time < 4.5 * period:
+        sim.step(1)
+        times.append(sim.time)
+        # The elevation is measured from the vertical (>= 0, the azimuth turns by pi as the link passes
+        # it): follow the tip's horizontal position instead, y in the paper frame for azimuth 0.
+        values.append(sim.snapshot().link_ends[-1][1])
+    times, values = np.array(times), np.array(values)
+    # Downward zero crossings of the tip's position, located by linear interpolation within a step.
+    i = np.where((values[:-1] > 0) & (values[1:] <= 0))[0]
+    crossings = times[i] + (times[i + 1] - times[i]) * values[i] / (values[i] - values[i + 1])
+    measured = np.mean(np.diff(crossings))
+    assert len(crossings) >= 4
+    # RK4 at dt = T/4000 is exact to far better than the th^4 term left out of the amplitude correction
+    # (~1e-7 at 0.05 rad); 1e-5 relative leaves room for the interpolation of the crossings.
+    assert measured == pytest.approx(period, rel=1e-5)
+
+
+# --- model matrices ---------------------------------------------------------------------------------
+
+def random_state(n, seed):
+    rng = np.random.default_rng(seed)
+    q = np.zeros(3 * n)
+    q[0::3] = rng.uniform(0.3, 1.2, n)   # elevation, away from the vertical
+    q[1::3] = rng.uniform(-1.0, 1.0, n)  # azimuth
+    q[2::3] = rng.uniform(-1.0, 1.0, n)  # torsion
+    return q, rng.uniform(-0.5, 0.5, 3 * n)
+
+
+def test_model_matches_cable_model_and_is_symmetric():
+    config = os.path.join(REPO, "config", "default.yaml")
+    overrides = ["cable.links=4", "cable.stiffness.model=bending", "cable.stiffness.bending_rigidity=50",
+                 "cable.stiffness.torsional_rigidity=20", "cable.damping.elevation=3", "cable.damping.azimuth=3",
+                 "cable.damping.torsion=1"]
+    sim = cable_dynamics.Simulator.from_file(config, overrides)
+    n = sim.links
+    q, qd = random_state(n, 7)
+    sim.set_state(q, qd)
+    m = sim.model()
+    assert m.coordinates[:3] == ["joint_1_elevation", "joint_1_azimuth", "joint_1_torsion"]
+    assert m.M.shape == (3 * n, 3 * n) and m.h.shape == (3 * n,)
+    # The state read back is the one set (through the core's axes and twists: rounding only).
+    np.testing.assert_allclose(m.q, q, atol=1e-12)
+    np.testing.assert_allclose(m.qd, qd, atol=1e-12)
+    # The same state through the C++ tool: its JSON prints 17 digits, so both are the same computation.
+    cmd = [required_env("CABLE_MODEL_BIN"), "--config", config]
+    for o in overrides:
+        cmd += ["--set", o]
+    cmd += ["--q", ",".join(repr(float(v)) for v in m.q), "--qd", ",".join(repr(float(v)) for v in m.qd)]
+    tool = json.loads(subprocess.run(cmd, capture_output=True, text=True, check=True).stdout)
+    for key in ("M", "K", "D"):
+        ref = np.array(tool[key])
+        np.testing.assert_allclose(getattr(m, key), ref, rtol=1e-12, atol=1e-12 * np.abs(ref).max(), err_msg=key)
+    for key in ("h", "G"):
+        ref = np.array(tool[key])
+        np.testing.assert_allclose(getattr(m, key), ref, rtol=1e-12, atol=1e-12 * np.abs(ref).max(), err_msg=key)
+    # Symmetric (a kinetic energy's Hessian, a potential's, a dissipation function's) and M positive definite.
+    for key in ("M", "K", "D"):
+        a = getattr(m, key)
+        assert np.abs(a - a.T).max() <= 1e-12 * np.abs(a).max(), key
+    assert np.all(np.linalg.eigvalsh(m.M) > 0.0)
+    assert np.abs(m.K).max() > 0.0 and np.abs(m.D).max() > 0.0, "the overrides gave springs and dampers"
+
+
+# --- the current --------------------------------------------------------------------------------------
+
+def shooting_reference(cfg, speed):
+    c, load, f = cfg["cable"], cfg["load"], cfg["fluid"]
+    lengths, ms = static_current.uniform_cable(
+        c["length"], c["links"], c["mass_per_length"] - f["density"] * math.pi * (c["diameter"] / 2) ** 2)
+    return static_current.solve_static_current(lengths, ms, load["mass"] - f["density"] * load["volume"],
+                                               c["diameter"], f["density"], f["drag_normal"], f["drag_tangential"],
+                                               speed, cfg.get("gravity", 9.81))
+
+
+def reference_axial_tensions(cfg, speed, ref):
+    """(n) the reference's force at each link's base end along that link [N], summed from the tip as the
+    shooting solver does."""
+    c, f = cfg["cable"], cfg["fluid"]
+    n, l = c["links"], c["length"] / c["links"]
+    ms = (c["mass_per_length"] - f["density"] * math.pi * (c["diameter"] / 2) ** 2) * l
+    force = np.array(ref["load_force"], dtype=float)
+    axial = np.zeros(n)
+    for k in range(n - 1, -1, -1):
+        a = ref["link_angles"][k]
+        force += static_current._link_total_force(a, l, ms, c["diameter"], f["density"], f["drag_normal"],
+                                                  f["drag_tangential"], speed, cfg.get("gravity", 9.81))
+        axial[k] = force @ np.array([math.sin(a), math.cos(a)])
+    return axial
+
+
+def current_config():
+    cfg = hanging_config(links=20, length=50.0, diameter=0.025, mass_per_length=0.6, load_mass=10.0,
+                         load_volume=0.005)
+    cfg["fluid"].update({"drag_normal": 1.2, "drag_tangential": 0.01})
+    return cfg
+
+
+# Both solve the same discrete chain (a straight link in a uniform current feels a uniform drag), to a
+# relative residual of 1e-9 (statics) and the last bit (shooting's bisection): 1e-6 leaves margin.
+REFERENCE_TOLERANCE = 1e-6
+
+
+@pytest.mark.parametrize("axis", [0, 1])
+def test_current_changes_the_drag_as_the_shooting_reference(axis):
+    cfg = current_config()
+    sim = cable_dynamics.Simulator.from_dict(cfg)
+    still = sim.snapshot().line_pull
+    speed = 1.2
+    current = [0.0, 0.0, 0.0]
+    current[axis] = speed
+    sim.set_current(current)
+    sim.reset_to_equilibrium()
+    s = sim.snapshot()
+    ref = shooting_reference(cfg, speed)
+    print(f"axis {axis}: top tension {s.line_pull:.9f} N (reference {reference_axial_tensions(cfg, speed, ref)[0]:.9f}"
+          f" N, still water {still:.6f} N); |base force| {np.linalg.norm(s.base_force):.9f} N (reference "
+          f"{ref['top_tension']:.9f} N); tip offset {s.link_ends[-1]} (reference {ref['load_offset']:.9f} m downstream)")
+    # The drag swings the cable downstream; across an inclined link it also lifts, so the top tension
+    # may fall below the still water's (here 86.7 N against 95.3 N): the reference decides.
+    assert abs(s.line_pull - still) > 0.01 * still
+    # The reference's top_tension is the base force's magnitude; line_pull is its part along link 1 (a link
+    # under a distributed load is not quite aligned with the force at its end).
+    assert np.linalg.norm(s.base_force) == pytest.approx(ref["top_tension"], rel=REFERENCE_TOLERANCE)
+    axial = reference_axial_tensions(cfg, speed, ref)
+    assert s.line_pull == pytest.approx(axial[0], rel=REFERENCE_TOLERANCE)
+    # Downstream in world axes: +x is paper +x, +y is paper -y (the paper frame is half a turn about x).
+    tip = s.link_ends[-1]
+    downstream = tip[0] if axis == 0 else -tip[1]
+    across = tip[1] if axis == 0 else tip[0]
+    assert downstream > 0.5 * cfg["cable"]["length"]
+    assert downstream == pytest.approx(ref["load_offset"], rel=REFERENCE_TOLERANCE)
+    assert abs(across) < 1e-9
+    assert tip[2] == pytest.approx(ref["load_depth"], rel=REFERENCE_TOLERANCE)
+    # The shape: every link end, planar in the current's plane.
+    ends = np.array(ref["ends"])  # (n+1, 2): x downstream, z down
+    np.testing.assert_allclose(s.link_ends[:, axis] * (1 if axis == 0 else -1), ends[:, 0],
+                               rtol=0, atol=REFERENCE_TOLERANCE * cfg["cable"]["length"])
+    np.testing.assert_allclose(s.link_ends[:, 2], ends[:, 1], rtol=0, atol=REFERENCE_TOLERANCE * cfg["cable"]["length"])
+    # Each link's tension is the force at its base end along the link: the reference's force there (its
+    # own sums from the tip) dotted with the link's axis.
+    np.testing.assert_allclose(s.tension, axial, rtol=REFERENCE_TOLERANCE)
+
+
+# --- the winch ------------------------------------------------------------------------------------------
+
+def test_winch_speed_command_pays_out_by_the_ramp_law():
+    cfg = hanging_config()
+    cfg["winch"] = {"max_length": 40.0, "min_length": 6.0, "max_speed": 2.0, "max_acceleration": 1.0}
+    sim = cable_dynamics.Simulator.from_dict(cfg)
+    assert sim.has_winch and sim.links == 21
+    start = sim.snapshot().deployed_length
+    assert start == pytest.approx(20.0, abs=1e-12)
+    sim.command_winch_speed(0.5)
+    sim.step(2000)  # 2 s: ramps at 1 m/s^2 to 0.5 m/s in 0.5 s (0.125 m), then cruises 1.5 s (0.75 m)
+    s = sim.snapshot()
+    assert s.winch_speed == pytest.approx(0.5, abs=1e-12)
+    assert s.deployed_length - start == pytest.approx(0.875, abs=1e-6)
+    # Paid out at the base: the base link (slot 11, 2 m at start) grows until it splits at 2.25 link lengths.
+    assert s.first_link == 11
+    base_link = np.linalg.norm(s.link_ends[12] - s.link_ends[11])
+    assert base_link == pytest.approx(2.0 + 0.875, abs=1e-6)
+    with pytest.raises(ValueError, match=r"speed = 2\.5.*within \+-2 m/s"):
+        sim.command_winch_speed(2.5)
+    with pytest.raises(ValueError, match=r"length = 41.*\[6, 40\] m"):
+        sim.command_winch_length(41.0)
+    sim.command_winch_length(25.0)  # accepted
+    no_winch = cable_dynamics.Simulator.from_dict(hanging_config())
+    with pytest.raises(ValueError, match="no winch"):
+        no_winch.command_winch_speed(0.1)
+
+
+# --- the README example ---------------------------------------------------------------------------------
+
+def test_readme_example_is_the_file_and_prints_the_reference_tensions():
+    with open(EXAMPLE) as f:
+        code = f.read()
+    body = code.split("\n", 1)[1]  # the README shows it without the shebang
+    with open(os.path.join(REPO, "README.md")) as f:
+        assert body.strip() in f.read(), "README.md shows cable_dynamics/python/examples/current_sweep.py verbatim"
+    setup = required_env("CABLE_DEVEL_SETUP")
+    # As a user runs it: a fresh shell, the devel space sourced, Debian's python3.
+    done = subprocess.run(["bash", "-c", f'source "{setup}" && /usr/bin/python3 "{EXAMPLE}"'], capture_output=True,
+                          text=True, timeout=300, env={"HOME": os.environ.get("HOME", "/tmp"), "PATH": "/usr/bin:/bin"})
+    assert done.returncode == 0, done.stderr
+    print(done.stdout)
+    rows = [line.split() for line in done.stdout.strip().splitlines()[1:]]
+    assert len(rows) == 6
+    cfg = {"cable": {"links": 25, "length": 50.0, "diameter": 0.025, "mass_per_length": 0.6},
+           "load": {"mass": 10.0, "volume": 0.005},
+           "fluid": {"density": RHO, "drag_normal": 1.2, "drag_tangential": 0.01}}
+    for speed, tension, offset, depth in ((float(v) for v in row) for row in rows):
+        ref = shooting_reference(cfg, speed)
+        # Printed to 4 decimals: half a unit of the last digit, or the reference tolerance. The top tension
+        # is the force along the top link (line_pull), the reference's axial force there.
+        top = reference_axial_tensions(cfg, speed, ref)[0]
+        assert tension == pytest.approx(top, rel=REFERENCE_TOLERANCE, abs=5e-5)
+        assert offset == pytest.approx(ref["load_offset"], rel=REFERENCE_TOLERANCE, abs=5e-5)
+        assert depth == pytest.approx(ref["load_depth"], rel=REFERENCE_TOLERANCE, abs=5e-5)
+
+
+# --- bad input -------------------------------------------------------------------------------------------
+
+def test_bad_input_is_refused_by_name():
+    with pytest.raises(cable_dynamics.ConfigError, match="cable.links"):
+        cable_dynamics.Simulator.from_dict({"cable": {"links": 0, "length": 1.0, "diameter": 0.01,
+                                                      "mass_per_length": 1.0}})
+    with pytest.raises(ValueError, match="cable.lenght"):  # ConfigError is a ValueError; unknown key named
+        cable_dynamics.Simulator.from_dict({"cable": {"links": 2, "length": 1.0, "lenght": 1.0, "diameter": 0.01,
+                                                      "mass_per_length": 1.0}})
+    with pytest.raises(ValueError, match="fluid.density"):
+        cable_dynamics.Simulator.from_dict(dict(hanging_config(), fluid={"density": float("nan")}))
+    with pytest.raises(TypeError, match="cable.diameter"):
+        cable_dynamics.Simulator.from_dict({"cable": {"links": 2, "length": 1.0, "diameter": None,
+                                                      "mass_per_length": 1.0}})
+    with pytest.raises(cable_dynamics.ConfigError, match="cable.links"):
+        cable_dynamics.Simulator.from_file(os.path.join(REPO, "config", "default.yaml"), ["cable.links=-3"])
+    sim = cable_dynamics.Simulator.from_dict(hanging_config())
+    with pytest.raises(ValueError, match=r"current = \[nan"):
+        sim.set_current([float("nan"), 0.0, 0.0])
+    with pytest.raises(ValueError, match=r"within \+-100 m/s"):
+        sim.set_current([0.0, 150.0, 0.0])
+    with pytest.raises(ValueError, match="attitude"):
+        sim.set_load_target([0.0, 0.0, -20.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0])
+    with pytest.raises(ValueError, match="steps = 0"):
+        sim.step(0)
+    with pytest.raises(ValueError, match="3n = 30"):
+        sim.set_state(np.zeros(3), np.zeros(3))
+    # numpy inputs work like lists
+    cable_dynamics.Simulator.from_dict(dict(hanging_config(), fluid={"density": np.float64(1025.0),
+                                                                    "current": np.array([0.1, 0.0, 0.0])}))
