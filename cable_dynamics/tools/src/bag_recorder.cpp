@@ -78,6 +78,8 @@ bool BagRecorder::record(CableSimulator& sim, std::string& error) {
     m.joints = std::make_unique<ElasticJoints>(sim.properties());
     m.joints_first = sim.firstLink();
   }
+  // readOutputs fills the source in place: the spring torques sized once, for every slot (as the node does).
+  if (m.source.spring_force.size() != 3 * sim.links()) m.source.spring_force = Eigen::VectorXd::Zero(3 * sim.links());
   if (!readOutputs(sim, *m.joints, m.source)) {
     error = "non-finite state (nothing of it written)";
     return false;

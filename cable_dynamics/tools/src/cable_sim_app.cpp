@@ -109,7 +109,8 @@ int writeStatics(CableSimulator& sim, const CableParams& params, const std::stri
 
 }  // namespace
 
-int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                const SampleRecorderFactory& bag) {
   CliOptions o;
   CableParams params;
   double sample = 0.01;
