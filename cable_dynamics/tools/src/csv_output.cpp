@@ -12,8 +12,8 @@ namespace {
 /// exponent of up to 3 digits with its sign ("-1.234567891e-308": 17).
 constexpr std::size_t kMaxNumberChars = 24;
 
-/// Values per row for n links: time, 3n coordinates, 3n rates, 3n ends, n tensions, and 22 scalars.
-std::size_t valuesPerRow(int links) { return 1 + 10 * static_cast<std::size_t>(links) + 22; }
+/// Values per row for n links: time, 3n coordinates, 3n rates, 3n ends, n tensions, and 19 scalars.
+std::size_t valuesPerRow(int links) { return 1 + 10 * static_cast<std::size_t>(links) + 19; }
 
 /// Calls `visit(value)` for every value of a row, in the columns' order (csvColumns); stops at the first
 /// call that returns false and returns false then.
