@@ -75,7 +75,7 @@ std::vector<double> probeValues(std::size_t count, unsigned seed) {
 }
 
 TEST(CsvOutput, NumbersAsTheStreamWroteThem) {
-  // 200 rows of n = 100 (1023 values each, about 200,000 numbers), compared with the stream's text.
+  // 200 rows of n = 100 (1020 values each, about 200,000 numbers), compared with the stream's text.
   const int n = 100;
   const std::size_t per_row = csvColumns(n).size();
   ASSERT_EQ(per_row, 1 + 10 * n + 19u);  // time, 3n q, 3n rates, 3n ends, n tensions, 19 scalars
