@@ -1,0 +1,184 @@
+"""The commands README.md prints, run through bash as printed.
+
+Every line of every ```sh block of README.md (comments and blank lines aside) is run in order from the
+repository root, one bash shell per block (so a `source` line carries over to the lines after it), under
+Xvfb with software GL (rviz opens a window), against a master on a port of its own. How a line is run
+depends on what it is:
+- `bash scripts/test.sh ...`: not run here (this test is part of it); .ci/run must run it as printed.
+- `bash scripts/run.sh ...`: runs for RUN_SH_SECONDS, then gets Ctrl-C (SIGINT), as a user stops it; it must
+  have started the node and still be running then.
+- a line starting with `roslaunch `: started in the background, as in a terminal of its own, and stopped
+  with SIGINT after every later block has run; it must still be running then.
+- any other line: must finish within LINE_TIMEOUT with exit status 0.
+The output of every line must have no error line (ERROR_PATTERN). What this does not check: that a
+command's output is right (other tests check the tools), nor anything on the screen of rviz.
+"""
+import os
+import re
+import signal
+import socket
+import subprocess
+import time
+
+import pytest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+RUN_SH_SECONDS = 60  # long enough for run.sh's no-op rebuild, roslaunch, the node and rviz to start
+LINE_TIMEOUT = 300
+ERROR_PATTERN = re.compile(r"\bError\b|\bERROR\b|\bFATAL\b|Traceback|File system loop|command not found")
+
+
+def readme_blocks():
+    """The README's ```sh blocks, each a list of its command lines."""
+    blocks, current = [], None
+    with open(os.path.join(REPO, "README.md")) as f:
+        for line in f:
+            stripped = line.rstrip("\n")
+            if current is None and stripped.strip() == "```sh":
+                current = []
+            elif current is not None and stripped.strip() == "```":
+                blocks.append(current)
+                current = None
+            elif current is not None and stripped.strip() and not stripped.strip().startswith("#"):
+                current.append(stripped)
+    assert current is None, "README.md: an unclosed ```sh block"
+    return blocks
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Shell:
+    """One bash per block: a line is sent on stdin, its output and exit status read back between markers."""
+
+    def __init__(self, env, log_dir, index):
+        self.log = open(os.path.join(log_dir, f"block{index}.log"), "w+")
+        self.proc = subprocess.Popen(["bash", "--noprofile", "--norc"], cwd=REPO, env=env, stdin=subprocess.PIPE,
+                                     stdout=self.log, stderr=subprocess.STDOUT, text=True, start_new_session=True)
+        self.count = 0
+
+    def run(self, command, timeout):
+        """Runs `command` in the shell; returns (exit status or None on timeout, its output)."""
+        self.count += 1
+        begin, end = f"@@begin{self.count}@@", f"@@end{self.count}@@"
+        self.proc.stdin.write(f"echo {begin}\n{command}\necho {end} $?\n")
+        self.proc.stdin.flush()
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            text = self._text()
+            m = re.search(re.escape(end) + r" (\d+)", text)
+            if m:
+                return int(m.group(1)), text.split(begin + "\n", 1)[-1].split(end)[0]
+            if self.proc.poll() is not None:
+                return self.proc.returncode, text.split(begin + "\n", 1)[-1]
+            time.sleep(0.5)
+        return None, self._text().split(begin + "\n", 1)[-1]
+
+    def interrupt(self):
+        """Ctrl-C to what runs in the shell's foreground (its process group)."""
+        os.killpg(self.proc.pid, signal.SIGINT)
+
+    def close(self):
+        if self.proc.poll() is None:
+            self.proc.stdin.close()
+            try:
+                self.proc.wait(timeout=60)
+            except subprocess.TimeoutExpired:
+                os.killpg(self.proc.pid, signal.SIGKILL)
+                self.proc.wait()
+
+    def _text(self):
+        self.log.flush()
+        with open(self.log.name) as f:
+            return f.read()
+
+
+def errors(output):
+    return [line for line in output.splitlines() if ERROR_PATTERN.search(line)]
+
+
+def test_readme_has_the_everyday_commands():
+    lines = [line for block in readme_blocks() for line in block]
+    for command in ("bash scripts/run.sh", "bash scripts/test.sh", "source scripts/env.bash", "rosrun cable_dynamics",
+                    "roslaunch cable_dynamics", "rostopic ", "rosservice call", "rosparam get", "rosbag info",
+                    "rosmsg show"):
+        assert any(line.startswith(command) for line in lines), f"README.md prints no `{command}` line"
+
+
+def test_ci_runs_the_test_command_as_printed():
+    lines = [line.split("#")[0].strip() for block in readme_blocks() for line in block]
+    printed = [line for line in lines if line.startswith("bash scripts/test.sh")]
+    assert printed == ["bash scripts/test.sh"]
+    with open(os.path.join(REPO, ".ci", "run")) as f:
+        assert "bash scripts/test.sh" in [line.strip() for line in f]
+
+
+def test_readme_commands_run_as_printed(tmp_path):
+    if not os.environ.get("DISPLAY"):
+        # rviz needs a display: run under Xvfb (scripts/test.sh does).
+        pytest.skip("no DISPLAY: run under xvfb-run (scripts/test.sh does)")
+    env = dict(os.environ)
+    env.update(ROS_MASTER_URI=f"http://localhost:{free_port()}", ROS_LOG_DIR=str(tmp_path / "ros_log"),
+               LIBGL_ALWAYS_SOFTWARE="1")
+    failures, background = [], []
+    try:
+        for index, block in enumerate(readme_blocks()):
+            shell = Shell(env, str(tmp_path), index)
+            keep_open = False
+            for line in block:
+                command = line.split(" #")[0].strip()
+                if command.startswith("bash scripts/test.sh"):
+                    continue  # test_ci_runs_the_test_command_as_printed
+                if command.startswith("bash scripts/run.sh"):
+                    status, output = shell.run(line, RUN_SH_SECONDS)
+                    if status is not None:
+                        failures.append(f"`{line}` ended (status {status}) before {RUN_SH_SECONDS} s:\n{output[-3000:]}")
+                    shell.interrupt()
+                    status, output = shell.run("true", 120)  # the interrupted command has stopped
+                    output = shell._text()
+                    if "cable_dynamics_node" not in output or "started" not in output:
+                        failures.append(f"`{line}`: the node did not start:\n{output[-3000:]}")
+                elif command.startswith("roslaunch "):
+                    shell.proc.stdin.write(line + "\n")  # a terminal of its own, running until Ctrl-C
+                    shell.proc.stdin.flush()
+                    wait_for_master(env)
+                    background.append((line, shell))
+                    keep_open = True
+                    break  # nothing after it in this terminal until it stops
+                else:
+                    status, output = shell.run(line, LINE_TIMEOUT)
+                    if status != 0:
+                        failures.append(f"`{line}`: exit status {status}:\n{output[-3000:]}")
+                    bad = errors(output)
+                    if bad:
+                        failures.append(f"`{line}`: error lines:\n" + "\n".join(bad))
+            if not keep_open:
+                shell.close()
+                bad = errors(shell._text())
+                if bad:
+                    failures.append(f"block {index}: error lines:\n" + "\n".join(bad))
+        for line, shell in background:
+            if shell.proc.poll() is not None:
+                failures.append(f"`{line}` stopped before the blocks after it were done:\n{shell._text()[-3000:]}")
+    finally:
+        for line, shell in background:
+            if shell.proc.poll() is None:
+                shell.interrupt()
+            shell.close()
+            bad = errors(shell._text())
+            if bad:
+                failures.append(f"`{line}`: error lines:\n" + "\n".join(bad))
+    assert not failures, "\n\n".join(failures)
+
+
+def wait_for_master(env, seconds=90):
+    """Until rosnode reaches the master the background roslaunch starts (bounded)."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        if subprocess.run(["rosnode", "list"], env=env, capture_output=True, timeout=30).returncode == 0:
+            return
+        time.sleep(1)
+    pytest.fail(f"no master at {env['ROS_MASTER_URI']} after {seconds} s")
