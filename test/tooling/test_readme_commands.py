@@ -5,8 +5,8 @@ repository root, one bash shell per block (so a `source` line carries over to th
 Xvfb with software GL (rviz opens a window), against a master on a port of its own. How a line is run
 depends on what it is:
 - `bash scripts/test.sh ...`: not run here (this test is part of it); .ci/run must run it as printed.
-- `bash scripts/run.sh ...`: runs for RUN_SH_SECONDS, then gets Ctrl-C (SIGINT), as a user stops it; it must
-  have started the node and still be running then.
+- `bash scripts/run.sh ...`: runs until roslaunch has started the node and RUN_SH_SECONDS more, then gets
+  Ctrl-C (SIGINT), as a user stops it; it must still be running then.
 - a line starting with `roslaunch `: started in the background, as in a terminal of its own, and stopped
   with SIGINT after every later block has run; it must still be running then.
 - any other line: must finish within LINE_TIMEOUT with exit status 0.
@@ -23,7 +23,9 @@ import time
 import pytest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-RUN_SH_SECONDS = 60  # long enough for run.sh's no-op rebuild, roslaunch, the node and rviz to start
+START_TIMEOUT = 600  # s: run.sh's install check and (no-op) rebuild, then roslaunch, on a loaded 2-core machine
+RUN_SH_SECONDS = 20  # s after the node has started: rviz starts and the demo runs
+NODE_STARTED = re.compile(r"process\[umbilical/cable_dynamics_node-\d+\]: started")
 LINE_TIMEOUT = 300
 ERROR_PATTERN = re.compile(r"\bError\b|\bERROR\b|\bFATAL\b|Traceback|File system loop|command not found")
 
@@ -60,22 +62,25 @@ class Shell:
                                      stdout=self.log, stderr=subprocess.STDOUT, text=True, start_new_session=True)
         self.count = 0
 
-    def run(self, command, timeout):
-        """Runs `command` in the shell; returns (exit status or None on timeout, its output)."""
-        self.count += 1
+    def run(self, command, timeout, until=None):
+        """Runs `command` in the shell (None: goes on waiting for the last one); returns (its exit status, or
+        None when it is still running after `timeout` s or once its output matches `until`; its output)."""
+        if command is not None:
+            self.count += 1
+            self.proc.stdin.write(f"echo @@begin{self.count}@@\n{command}\necho @@end{self.count}@@ $?\n")
+            self.proc.stdin.flush()
         begin, end = f"@@begin{self.count}@@", f"@@end{self.count}@@"
-        self.proc.stdin.write(f"echo {begin}\n{command}\necho {end} $?\n")
-        self.proc.stdin.flush()
         deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            text = self._text()
+        while True:
+            text = self._text().split(begin + "\n", 1)[-1]
             m = re.search(re.escape(end) + r" (\d+)", text)
             if m:
-                return int(m.group(1)), text.split(begin + "\n", 1)[-1].split(end)[0]
+                return int(m.group(1)), text.split(end)[0]
             if self.proc.poll() is not None:
-                return self.proc.returncode, text.split(begin + "\n", 1)[-1]
+                return self.proc.returncode, text
+            if (until is not None and until.search(text)) or time.monotonic() > deadline:
+                return None, text
             time.sleep(0.5)
-        return None, self._text().split(begin + "\n", 1)[-1]
 
     def interrupt(self):
         """Ctrl-C to what runs in the shell's foreground (its process group)."""
@@ -127,20 +132,31 @@ def test_readme_commands_run_as_printed(tmp_path):
     try:
         for index, block in enumerate(readme_blocks()):
             shell = Shell(env, str(tmp_path), index)
+            finished = []  # this block's earlier shells
             keep_open = False
             for line in block:
                 command = line.split(" #")[0].strip()
                 if command.startswith("bash scripts/test.sh"):
                     continue  # test_ci_runs_the_test_command_as_printed
                 if command.startswith("bash scripts/run.sh"):
-                    status, output = shell.run(line, RUN_SH_SECONDS)
-                    if status is not None:
-                        failures.append(f"`{line}` ended (status {status}) before {RUN_SH_SECONDS} s:\n{output[-3000:]}")
+                    # Until roslaunch has started the node (after run.sh's install check and rebuild), then
+                    # RUN_SH_SECONDS more for the node and rviz to run; then Ctrl-C.
+                    status, output = shell.run(line, START_TIMEOUT, until=NODE_STARTED)
+                    if status is not None or not NODE_STARTED.search(output):
+                        failures.append(f"`{line}`: the node did not start (status {status}):\n{output[-3000:]}")
+                    else:
+                        status, output = shell.run(None, RUN_SH_SECONDS)
+                        if status is not None:
+                            failures.append(f"`{line}` stopped (status {status}) by itself:\n{output[-3000:]}")
                     shell.interrupt()
-                    status, output = shell.run("true", 120)  # the interrupted command has stopped
-                    output = shell._text()
-                    if "cable_dynamics_node" not in output or "started" not in output:
-                        failures.append(f"`{line}`: the node did not start:\n{output[-3000:]}")
+                    # A non-interactive bash stops with the command Ctrl-C stopped: the block's later lines
+                    # go on in a new shell, as in a new terminal.
+                    try:
+                        shell.proc.wait(timeout=120)
+                    except subprocess.TimeoutExpired:
+                        failures.append(f"`{line}`: still running 120 s after Ctrl-C")
+                    finished.append(shell)
+                    shell = Shell(env, str(tmp_path), f"{index}_{len(finished)}")
                 elif command.startswith("roslaunch "):
                     shell.proc.stdin.write(line + "\n")  # a terminal of its own, running until Ctrl-C
                     shell.proc.stdin.flush()
@@ -156,8 +172,10 @@ def test_readme_commands_run_as_printed(tmp_path):
                     if bad:
                         failures.append(f"`{line}`: error lines:\n" + "\n".join(bad))
             if not keep_open:
-                shell.close()
-                bad = errors(shell._text())
+                finished.append(shell)
+            for done in finished:
+                done.close()
+                bad = errors(done._text())
                 if bad:
                     failures.append(f"block {index}: error lines:\n" + "\n".join(bad))
         for line, shell in background:
