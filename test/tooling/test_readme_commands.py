@@ -5,14 +5,15 @@ repository root, one bash shell per block (so a `source` line carries over to th
 Xvfb with software GL (rviz opens a window), against a master on a port of its own. How a line is run
 depends on what it is:
 - `bash scripts/test.sh ...`: not run here (this test is part of it); .ci/run must run it as printed.
-- `bash scripts/run.sh ...`: runs until roslaunch has started the node and RUN_SH_SECONDS more, then gets
-  Ctrl-C (SIGINT), as a user stops it; it must still be running then.
+- `bash scripts/run.sh ...`: runs until roslaunch has started the node, rviz is through its start and
+  RUN_SH_SECONDS more, then gets Ctrl-C (SIGINT), as a user stops it; it must still be running then.
 - a line starting with `roslaunch `: started in the background, as in a terminal of its own, and stopped
   with SIGINT after every later block has run; it must still be running then.
 - any other line: must finish within LINE_TIMEOUT with exit status 0.
 The output of every line must have no error line (ERROR_PATTERN). What this does not check: that a
 command's output is right (other tests check the tools), nor anything on the screen of rviz.
 """
+import glob
 import os
 import re
 import signal
@@ -25,6 +26,7 @@ import pytest
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 START_TIMEOUT = 600  # s: run.sh's install check and (no-op) rebuild, then roslaunch, on a loaded 2-core machine
 RUN_SH_SECONDS = 20  # s after the node has started: rviz starts and the demo runs
+RVIZ_STARTED = "OpenGl version:"  # rviz's last start-up line, after its render system and resources are set up
 NODE_STARTED = re.compile(r"process\[umbilical/cable_dynamics_node-\d+\]: started")
 LINE_TIMEOUT = 300
 ERROR_PATTERN = re.compile(r"\bError\b|\bERROR\b|\bFATAL\b|Traceback|File system loop|command not found")
@@ -126,9 +128,10 @@ def test_readme_commands_run_as_printed(tmp_path):
         # rviz needs a display: run under Xvfb (scripts/test.sh does).
         pytest.skip("no DISPLAY: run under xvfb-run (scripts/test.sh does)")
     env = dict(os.environ)
-    env.update(ROS_MASTER_URI=f"http://localhost:{free_port()}", ROS_LOG_DIR=str(tmp_path / "ros_log"),
-               LIBGL_ALWAYS_SOFTWARE="1")
+    log_dir = str(tmp_path / "ros_log")
+    env.update(ROS_MASTER_URI=f"http://localhost:{free_port()}", ROS_LOG_DIR=log_dir, LIBGL_ALWAYS_SOFTWARE="1")
     failures, background = [], []
+    rviz_checked, rviz_in_background = 0, 0  # rviz windows checked so far; started by background roslaunches
     try:
         for index, block in enumerate(readme_blocks()):
             shell = Shell(env, str(tmp_path), index)
@@ -140,27 +143,29 @@ def test_readme_commands_run_as_printed(tmp_path):
                     continue  # test_ci_runs_the_test_command_as_printed
                 if command.startswith("bash scripts/run.sh"):
                     # Until roslaunch has started the node (after run.sh's install check and rebuild), then
-                    # RUN_SH_SECONDS more for the node and rviz to run; then Ctrl-C.
+                    # until rviz is through its start and RUN_SH_SECONDS more; then Ctrl-C.
                     status, output = shell.run(line, START_TIMEOUT, until=NODE_STARTED)
                     if status is not None or not NODE_STARTED.search(output):
                         failures.append(f"`{line}`: the node did not start (status {status}):\n{output[-3000:]}")
                     else:
+                        rviz_checked += 1
+                        if not wait_for_rviz(log_dir, rviz_checked):
+                            failures.append(f"`{line}`: rviz did not get through its start ({RVIZ_STARTED})")
                         status, output = shell.run(None, RUN_SH_SECONDS)
                         if status is not None:
                             failures.append(f"`{line}` stopped (status {status}) by itself:\n{output[-3000:]}")
                     shell.interrupt()
-                    # A non-interactive bash stops with the command Ctrl-C stopped: the block's later lines
-                    # go on in a new shell, as in a new terminal.
-                    try:
-                        shell.proc.wait(timeout=120)
-                    except subprocess.TimeoutExpired:
+                    status, output = shell.run(None, 120)
+                    if status is None:
                         failures.append(f"`{line}`: still running 120 s after Ctrl-C")
-                    finished.append(shell)
-                    shell = Shell(env, str(tmp_path), f"{index}_{len(finished)}")
+                    if shell.proc.poll() is not None:  # the shell went with it: the rest in a new one
+                        finished.append(shell)
+                        shell = Shell(env, str(tmp_path), f"{index}_{len(finished)}")
                 elif command.startswith("roslaunch "):
                     shell.proc.stdin.write(line + "\n")  # a terminal of its own, running until Ctrl-C
                     shell.proc.stdin.flush()
                     wait_for_master(env)
+                    rviz_in_background += "rviz:=true" in command
                     background.append((line, shell))
                     keep_open = True
                     break  # nothing after it in this terminal until it stops
@@ -178,6 +183,8 @@ def test_readme_commands_run_as_printed(tmp_path):
                 bad = errors(done._text())
                 if bad:
                     failures.append(f"block {index}: error lines:\n" + "\n".join(bad))
+        if rviz_in_background and not wait_for_rviz(log_dir, rviz_checked + rviz_in_background):
+            failures.append(f"a roslaunch with rviz:=true: rviz did not get through its start ({RVIZ_STARTED})")
         for line, shell in background:
             if shell.proc.poll() is not None:
                 failures.append(f"`{line}` stopped before the blocks after it were done:\n{shell._text()[-3000:]}")
@@ -190,6 +197,22 @@ def test_readme_commands_run_as_printed(tmp_path):
             if bad:
                 failures.append(f"`{line}`: error lines:\n" + "\n".join(bad))
     assert not failures, "\n\n".join(failures)
+
+
+def wait_for_rviz(log_dir, count, seconds=180):
+    """Until `count` rviz logs (roslaunch keeps a node's stdout in ROS_LOG_DIR) say that rviz got through its
+    start: past the resource set-up where Debian's rviz asks for media_export (its stderr, with any error
+    line, is on the terminal). Bounded."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        done = 0
+        for path in glob.glob(os.path.join(log_dir, "*", "rviz*-stdout.log")):
+            with open(path, errors="replace") as f:
+                done += RVIZ_STARTED in f.read()
+        if done >= count:
+            return True
+        time.sleep(1)
+    return False
 
 
 def wait_for_master(env, seconds=90):
