@@ -26,7 +26,7 @@ import pytest
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 START_TIMEOUT = 600  # s: run.sh's install check and (no-op) rebuild, then roslaunch, on a loaded 2-core machine
 RUN_SH_SECONDS = 20  # s after the node has started: rviz starts and the demo runs
-RVIZ_STARTED = "OpenGl version:"  # rviz's last start-up line, after its render system and resources are set up
+RVIZ_STARTED = "OpenGl version:"  # rviz's last start-up line in its log, after its render system is set up
 NODE_STARTED = re.compile(r"process\[umbilical/cable_dynamics_node-\d+\]: started")
 LINE_TIMEOUT = 300
 ERROR_PATTERN = re.compile(r"\bError\b|\bERROR\b|\bFATAL\b|Traceback|File system loop|command not found")
@@ -58,7 +58,10 @@ def free_port():
 class Shell:
     """One bash per block: a line is sent on stdin, its output and exit status read back between markers."""
 
+    started = []  # every shell, so that none outlives the test (stop_all)
+
     def __init__(self, env, log_dir, index):
+        Shell.started.append(self)
         self.log = open(os.path.join(log_dir, f"block{index}.log"), "w+")
         self.proc = subprocess.Popen(["bash", "--noprofile", "--norc"], cwd=REPO, env=env, stdin=subprocess.PIPE,
                                      stdout=self.log, stderr=subprocess.STDOUT, text=True, start_new_session=True)
@@ -96,6 +99,24 @@ class Shell:
             except subprocess.TimeoutExpired:
                 os.killpg(self.proc.pid, signal.SIGKILL)
                 self.proc.wait()
+
+    @classmethod
+    def stop_all(cls):
+        """Ctrl-C, then SIGKILL, to the process group of every shell still running (with what it started)."""
+        for shell in cls.started:
+            if shell.proc.poll() is None:
+                shell.interrupt()
+        deadline = time.monotonic() + 60
+        for shell in cls.started:
+            try:
+                shell.proc.wait(timeout=max(1.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired:
+                pass
+            try:
+                os.killpg(shell.proc.pid, signal.SIGKILL)  # what is left of its group
+            except ProcessLookupError:
+                pass
+        cls.started = []
 
     def _text(self):
         self.log.flush()
@@ -149,8 +170,8 @@ def test_readme_commands_run_as_printed(tmp_path):
                         failures.append(f"`{line}`: the node did not start (status {status}):\n{output[-3000:]}")
                     else:
                         rviz_checked += 1
-                        if not wait_for_rviz(log_dir, rviz_checked):
-                            failures.append(f"`{line}`: rviz did not get through its start ({RVIZ_STARTED})")
+                        if not wait_for_rviz(env):
+                            failures.append(f"`{line}`: no rviz subscribed to the cable's markers")
                         status, output = shell.run(None, RUN_SH_SECONDS)
                         if status is not None:
                             failures.append(f"`{line}` stopped (status {status}) by itself:\n{output[-3000:]}")
@@ -183,8 +204,8 @@ def test_readme_commands_run_as_printed(tmp_path):
                 bad = errors(done._text())
                 if bad:
                     failures.append(f"block {index}: error lines:\n" + "\n".join(bad))
-        if rviz_in_background and not wait_for_rviz(log_dir, rviz_checked + rviz_in_background):
-            failures.append(f"a roslaunch with rviz:=true: rviz did not get through its start ({RVIZ_STARTED})")
+        if rviz_in_background and not wait_for_rviz(env):
+            failures.append("a roslaunch with rviz:=true: no rviz subscribed to the cable's markers")
         for line, shell in background:
             if shell.proc.poll() is not None:
                 failures.append(f"`{line}` stopped before the blocks after it were done:\n{shell._text()[-3000:]}")
@@ -196,23 +217,41 @@ def test_readme_commands_run_as_printed(tmp_path):
             bad = errors(shell._text())
             if bad:
                 failures.append(f"`{line}`: error lines:\n" + "\n".join(bad))
+        Shell.stop_all()
+    started = rviz_logs_through_start(log_dir)
+    if started < rviz_checked + rviz_in_background:
+        failures.append(f"{started} rviz logs reach '{RVIZ_STARTED}' of {rviz_checked + rviz_in_background} rviz started")
     assert not failures, "\n\n".join(failures)
 
 
-def wait_for_rviz(log_dir, count, seconds=180):
-    """Until `count` rviz logs (roslaunch keeps a node's stdout in ROS_LOG_DIR) say that rviz got through its
-    start: past the resource set-up where Debian's rviz asks for media_export (its stderr, with any error
-    line, is on the terminal). Bounded."""
+def wait_for_rviz(env, seconds=180):
+    """Until an rviz node subscribes to the cable's markers on the master of `env` (rviz subscribes once its
+    render system and resources are set up, past where Debian's rviz asks for media_export). Bounded."""
+    import rosgraph.masterapi  # Debian's python3-rosgraph
+
+    master = rosgraph.masterapi.Master("/test_readme_commands", master_uri=env["ROS_MASTER_URI"])
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
-        done = 0
-        for path in glob.glob(os.path.join(log_dir, "*", "rviz*-stdout.log")):
-            with open(path, errors="replace") as f:
-                done += RVIZ_STARTED in f.read()
-        if done >= count:
-            return True
+        try:
+            _, subscribers, _ = master.getSystemState()
+            for topic, nodes in subscribers:
+                if topic.endswith("/cable_markers") and any(n.startswith("/rviz") for n in nodes):
+                    return True
+        except (rosgraph.masterapi.Error, OSError):
+            pass
         time.sleep(1)
     return False
+
+
+def rviz_logs_through_start(log_dir):
+    """How many rviz stdout logs (written out when rviz exits) reach RVIZ_STARTED."""
+    done = 0
+    for path in glob.glob(os.path.join(log_dir, "*", "rviz*-stdout.log")):
+        if os.path.islink(os.path.dirname(path)):
+            continue  # ros_log/latest
+        with open(path, errors="replace") as f:
+            done += RVIZ_STARTED in f.read()
+    return done
 
 
 def wait_for_master(env, seconds=90):
