@@ -10,9 +10,26 @@
 #include <string>
 #include <vector>
 
+#include <cstdlib>
+#include <new>
+#include <streambuf>
+
 #include <gtest/gtest.h>
 
 #include "cable_dynamics/tools/csv_output.h"
+
+// Heap allocations while g_counting is set (a replaced operator new, as test_node_winch_parts does).
+namespace {
+bool g_counting = false;
+long g_allocations = 0;
+}  // namespace
+void* operator new(std::size_t size) {
+  if (g_counting) ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace cable_dynamics {
 namespace {
@@ -149,6 +166,40 @@ TEST(CsvOutput, SameBytesWhateverTheBufferSize) {
   EXPECT_EQ(std::count(outputs[0].begin(), outputs[0].end(), '\n'), 301);
   EXPECT_EQ(outputs[0], outputs[1]);
   EXPECT_EQ(outputs[0], outputs[2]);
+}
+
+/// A stream that counts what it is given and keeps nothing (so that the stream itself never allocates).
+class CountingSink : public std::streambuf {
+ public:
+  std::size_t bytes = 0;
+
+ protected:
+  std::streamsize xsputn(const char*, std::streamsize n) override {
+    bytes += static_cast<std::size_t>(n);
+    return n;
+  }
+  int_type overflow(int_type c) override {
+    ++bytes;
+    return c;
+  }
+};
+
+TEST(CsvOutput, NoAllocationPerRow) {
+  // Rows of n = 100, through many hand-overs of the buffer (flush_bytes 64 KiB: about every 6 rows).
+  const int n = 100;
+  std::vector<double> v = probeValues(csvColumns(n).size(), 7);
+  v.back() = 100;
+  const SimulationSnapshot snapshot = snapshotOf(n, v);
+  CountingSink sink;
+  std::ostream out(&sink);
+  CsvWriter writer(out, n, 1 << 16);
+  writer.writeHeader();
+  g_counting = true;
+  for (int row = 0; row < 500; ++row) ASSERT_TRUE(writer.writeRow(snapshot));
+  ASSERT_TRUE(writer.flush());
+  g_counting = false;
+  EXPECT_EQ(g_allocations, 0);
+  EXPECT_GT(sink.bytes, 500u * 1020u * 2u);  // the rows went out (at least 2 characters a value)
 }
 
 TEST(CsvOutput, WrongSizeNamed) {
