@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs every preset in config/ for its configured duration and writes docs/plots/<preset>.png (and the
-# CSV under .ws/plots/). Needs a build (scripts/run.sh or scripts/test.sh builds one).
+# CSV under the workspace's plots/, scripts/common.sh: beside the repository). Needs a build (scripts/run.sh or scripts/test.sh builds one).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 mkdir -p "$REPO_DIR/docs/plots" "$WS_DIR/plots"

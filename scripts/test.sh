@@ -15,6 +15,16 @@ catkin_make -C "$WS_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 tests -j"$(nproc)"
 # `run_tests` itself does not fail on a failing test; catkin_test_results does, below.
 catkin_make -C "$WS_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1
 
+# The README's commands as printed (test/tooling/test_readme_commands.py). Outside catkin's run_tests
+# because one of them, scripts/run.sh, builds this workspace itself (nothing to do by then); under Xvfb
+# because rviz opens a window. Its result goes with catkin's into the summary below.
+readme_xml="$WS_DIR/build/test_results/cable_dynamics/pytest-readme_commands.xml"
+set +e
+xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 -m pytest -q -p no:cacheprovider \
+  "$REPO_DIR/test/tooling/test_readme_commands.py" --junitxml="$readme_xml"
+set -e
+[ -f "$readme_xml" ] || { echo "test_readme_commands.py wrote no result"; exit 1; }
+
 set +e
 results="$(catkin_test_results --verbose "$WS_DIR/build/test_results")"
 status=$?

@@ -114,3 +114,6 @@ target_link_libraries(test_equilibrium_start cable_dynamics_core ${GTEST_MAIN_LI
 
 catkin_add_gtest(test_body_motion test/test_body_motion.cpp)
 target_link_libraries(test_body_motion cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+# cable_sim's CSV and rosbag outputs.
+include(${CMAKE_CURRENT_LIST_DIR}/tooling/tooling_tests.cmake)

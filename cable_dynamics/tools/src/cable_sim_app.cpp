@@ -27,8 +27,9 @@ constexpr double kMaxEnergyDrift = 1e-3;
 
 const char* const kUsage =
     "usage: cable_sim --config FILE [--set key.path=value ...] [--duration S] --output run.csv\n"
-    "                 [--plot run.png] [--sample S] [--statics]\n"
+    "                 [--plot run.png] [--bag run.bag] [--sample S] [--statics]\n"
     "Simulates the cable offline and writes one CSV row every --sample seconds (default 0.01 s).\n"
+    "--bag also writes the node's topics at those instants as a rosbag (rosbag play, rviz).\n"
     "--duration defaults to the config's simulation.duration.\n"
     "--statics solves the static equilibrium for the configured loads and ends instead, writes it as the\n"
     "CSV's one row (t = 0) and exits (status 6 when there is none, with the reason).\n";
@@ -91,10 +92,15 @@ int writeStatics(CableSimulator& sim, const CableParams& params, const std::stri
   }
   SimulationSnapshot snapshot;
   sim.snapshot(snapshot);
-  writeCsvHeader(csv, params.links, params.seabed.enabled);
-  if (!writeCsvRow(csv, snapshot)) {
+  CsvWriter writer(csv, params.links, CsvWriter::kDefaultFlushBytes, params.seabed.enabled);
+  writer.writeHeader();
+  if (!writer.writeRow(snapshot)) {
     err << "cable_sim: the static equilibrium has a non-finite value\n";
     return 3;
+  }
+  if (!writer.flush()) {
+    err << "cable_sim: cannot write " << output << "\n";
+    return 4;
   }
   err << "cable_sim: static equilibrium in " << s.iterations << " Newton iterations, residual " << s.residual
       << " (tolerance " << StaticOptions{}.tolerance << "), " << 1e3 * wall << " ms; top tension "
@@ -104,18 +110,22 @@ int writeStatics(CableSimulator& sim, const CableParams& params, const std::stri
 
 }  // namespace
 
-int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                const SampleRecorderFactory& bag) {
   CliOptions o;
   CableParams params;
   double sample = 0.01;
   try {
-    o = parseCli(argc, argv, {"--config", "--set", "--duration", "--output", "--plot", "--sample", "--statics"});
+    o = parseCli(argc, argv,
+                 {"--config", "--set", "--duration", "--output", "--plot", "--bag", "--sample", "--statics"});
     if (o.help) {
       out << kUsage;
       return 0;
     }
     if (o.config.empty()) throw UsageError("--config FILE is required");
     if (o.output.empty()) throw UsageError("--output run.csv is required");
+    if (!o.bag.empty() && !bag) throw UsageError("--bag: this build of cable_sim has no rosbag output");
+    if (!o.bag.empty() && o.statics) throw UsageError("--bag is for a run, not for --statics");
     if (o.sample) sample = *o.sample;
     params = loadConfigFile(o.config, o.overrides);
   } catch (const UsageError& e) {
@@ -150,10 +160,25 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
     err << "cable_sim: cannot write " << o.output << "\n";
     return 4;
   }
-  writeCsvHeader(csv, params.links, params.seabed.enabled);
+  std::unique_ptr<SampleRecorder> recorder;
+  if (!o.bag.empty()) {
+    try {
+      recorder = bag(o.bag, params);
+    } catch (const std::runtime_error& e) {
+      err << "cable_sim: " << e.what() << "\n";
+      return 4;
+    }
+  }
+  std::string record_error;
+  CsvWriter writer(csv, params.links, CsvWriter::kDefaultFlushBytes, params.seabed.enabled);
+  writer.writeHeader();
   SimulationSnapshot snapshot;
   sim.snapshot(snapshot);
-  writeCsvRow(csv, snapshot);
+  writer.writeRow(snapshot);
+  if (recorder && !recorder->record(sim, record_error)) {
+    err << "cable_sim: " << o.bag << ": " << record_error << "\n";
+    return 4;
+  }
   const double duration = o.duration ? *o.duration : params.simulation.duration;
   const long steps = std::lround(duration / sim.dt());
   const long every = std::max(1L, std::lround(sample / sim.dt()));
@@ -176,16 +201,29 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
       sim.snapshot(snapshot);
       deepest = std::max(deepest, snapshot.chain.seabed.max_penetration);
       if (params.seabed.enabled && snapshot.chain.seabed.max_penetration > params.seabed.penetration) ++sunk;
-      if (!writeCsvRow(csv, snapshot)) {
+      if (!writer.writeRow(snapshot)) {
         err << "cable_sim: non-finite output at t = " << sim.time() << " s; stopped\n";
         status = 3;
+        break;
+      }
+      if (recorder && !recorder->record(sim, record_error)) {
+        err << "cable_sim: " << o.bag << ": " << record_error << " at t = " << sim.time() << " s; stopped\n";
+        status = 4;
         break;
       }
     }
     progress.update(sim.time());
   }
   if (status == 0) progress.finish(sim.time());
+  if (!writer.flush()) {
+    err << "cable_sim: cannot write " << o.output << "\n";
+    if (status == 0) status = 4;
+  }
   csv.close();
+  if (recorder && !recorder->close(record_error)) {
+    err << "cable_sim: " << o.bag << ": " << record_error << "\n";
+    if (status == 0) status = 4;
+  }
   if (retried > 0) err << "cable_sim: " << retried << " steps needed substeps after diverging at dt\n";
   // A run whose steps mostly had to be redone in pieces is not the run the configuration asked for.
   const long done = std::lround(sim.time() / sim.dt());
@@ -210,7 +248,8 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
         << params.seabed.penetration << " m (deepest " << deepest << " m): raise seabed.stiffness or the penetration\n";
     status = 5;
   }
-  err << "cable_sim: wrote " << o.output << " (t = 0 to " << sim.time() << " s)\n";
+  err << "cable_sim: wrote " << o.output << (recorder ? " and " + o.bag : std::string()) << " (t = 0 to "
+      << sim.time() << " s)\n";
 
   if (!o.plot.empty()) {
     const std::string command = "/usr/bin/python3 '" + plotScript() + "' '" + o.output + "' '" + o.plot + "'";

@@ -73,6 +73,8 @@ CliOptions parseCli(int argc, const char* const* argv, const std::vector<std::st
       o.output = value;
     } else if (flag == "--plot") {
       o.plot = value;
+    } else if (flag == "--bag") {
+      o.bag = value;
     }
   }
   return o;

@@ -1,44 +1,66 @@
 #include "cable_dynamics/tools/csv_output.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
+#include <stdexcept>
 
 namespace cable_dynamics {
 namespace {
 
-std::vector<double> rowValues(const SimulationSnapshot& s) {
+/// The most characters one number takes at 10 significant digits: sign, 10 digits, the point, and an
+/// exponent of up to 3 digits with its sign ("-1.234567891e-308": 17).
+constexpr std::size_t kMaxNumberChars = 24;
+
+/// Values per row for n links: time, 3n coordinates, 3n rates, 3n ends, n tensions, 26 scalars, and with
+/// a seabed n normal forces.
+std::size_t valuesPerRow(int links, bool seabed) {
+  return 1 + (seabed ? 11 : 10) * static_cast<std::size_t>(links) + 26;
+}
+
+/// Calls `visit(value)` for every value of a row, in the columns' order (csvColumns); stops at the first
+/// call that returns false and returns false then.
+template <class Visit>
+bool forEachValue(const SimulationSnapshot& s, bool seabed, Visit&& visit) {
   const int n = static_cast<int>(s.q.size()) / 3;
-  std::vector<double> v;
-  v.reserve(8 * n + 16);
-  v.push_back(s.time);
-  for (int i = 0; i < 3 * n; ++i) v.push_back(s.q(i));
-  for (int i = 0; i < 3 * n; ++i) v.push_back(s.qd(i));
-  for (int k = 1; k <= n; ++k) {
-    for (int c = 0; c < 3; ++c) v.push_back(s.chain.ends(c, k));
+  if (!visit(s.time)) return false;
+  for (int i = 0; i < 3 * n; ++i) {
+    if (!visit(s.q(i))) return false;
   }
-  for (int k = 0; k < n; ++k) v.push_back(s.chain.tension(k));
-  v.push_back(s.line_pull);  // the tension at the top of the deployed cable
-  for (int c = 0; c < 3; ++c) v.push_back(s.chain.load_force(c));
-  for (int c = 0; c < 3; ++c) v.push_back(s.chain.base_force(c));
-  v.push_back(s.chain.kinetic_energy);
-  v.push_back(s.chain.potential_energy);
-  v.push_back(s.chain.elastic_energy);
-  v.push_back(s.dissipated_energy);
-  v.push_back(s.work_input);
-  v.push_back(s.total_energy);
-  for (int c = 0; c < 3; ++c) v.push_back(s.chain.ends(c, 0));  // the base (it may move)
-  v.push_back(s.deployed_length);
-  v.push_back(s.winch_speed);
-  v.push_back(static_cast<double>(n - s.first_link));
+  for (int i = 0; i < 3 * n; ++i) {
+    if (!visit(s.qd(i))) return false;
+  }
+  for (int k = 1; k <= n; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      if (!visit(s.chain.ends(c, k))) return false;
+    }
+  }
+  for (int k = 0; k < n; ++k) {
+    if (!visit(s.chain.tension(k))) return false;
+  }
+  const double scalars[] = {s.line_pull,  // the tension at the top of the deployed cable
+                            s.chain.load_force(0), s.chain.load_force(1), s.chain.load_force(2),
+                            s.chain.base_force(0), s.chain.base_force(1), s.chain.base_force(2),
+                            s.chain.kinetic_energy, s.chain.potential_energy, s.chain.elastic_energy,
+                            s.dissipated_energy, s.work_input, s.total_energy,
+                            s.chain.ends(0, 0), s.chain.ends(1, 0), s.chain.ends(2, 0),  // the base (it may move)
+                            s.deployed_length, s.winch_speed, static_cast<double>(n - s.first_link)};
+  for (double x : scalars) {
+    if (!visit(x)) return false;
+  }
   // The seabed (zeros without one; touchdown_arc_length -1 while nothing touches), paper frame as the ends.
   const SeabedReport& bed = s.chain.seabed;
-  for (double x : {s.chain.contact_energy, bed.grounded_length, bed.touching ? bed.touchdown_arc_length : -1.0,
-                   bed.touchdown.x(), bed.touchdown.y(), bed.touchdown.z(), bed.max_penetration}) {
-    v.push_back(x);
+  const double contact[] = {s.chain.contact_energy, bed.grounded_length, bed.touching ? bed.touchdown_arc_length : -1.0,
+                            bed.touchdown.x(), bed.touchdown.y(), bed.touchdown.z(), bed.max_penetration};
+  for (double x : contact) {
+    if (!visit(x)) return false;
   }
-  for (int k = 0; k < bed.normal_force.size(); ++k) v.push_back(bed.normal_force(k));
-  return v;
+  if (seabed) {
+    for (int k = 0; k < n; ++k) {
+      if (!visit(k < bed.normal_force.size() ? bed.normal_force(k) : 0.0)) return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -64,22 +86,64 @@ std::vector<std::string> csvColumns(int links, bool seabed) {
   return c;
 }
 
-void writeCsvHeader(std::ostream& out, int links, bool seabed) {
-  const std::vector<std::string> columns = csvColumns(links, seabed);
-  for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
-  out << "\n";
+CsvWriter::CsvWriter(std::ostream& out, int links, std::size_t flush_bytes, bool seabed)
+    : out_(out),
+      links_(links),
+      seabed_(seabed),
+      flush_bytes_(flush_bytes),
+      row_bytes_(valuesPerRow(links, seabed) * (kMaxNumberChars + 1) + 1),
+      buffer_(flush_bytes + row_bytes_) {}
+
+CsvWriter::~CsvWriter() { flush(); }
+
+void CsvWriter::writeHeader() {
+  std::string line;
+  const std::vector<std::string> columns = csvColumns(links_, seabed_);
+  for (std::size_t i = 0; i < columns.size(); ++i) line += (i ? "," : "") + columns[i];
+  line += "\n";
+  handOver();
+  out_.write(line.data(), static_cast<std::streamsize>(line.size()));
 }
 
-bool writeCsvRow(std::ostream& out, const SimulationSnapshot& s) {
-  const std::vector<double> v = rowValues(s);
-  for (double x : v) {
-    if (!std::isfinite(x)) return false;
+bool CsvWriter::writeRow(const SimulationSnapshot& s) {
+  if (s.q.size() != 3 * links_) {
+    throw std::invalid_argument("CsvWriter: a snapshot of " + std::to_string(s.q.size() / 3) + " links for a CSV of " +
+                                std::to_string(links_));
   }
-  std::ostringstream line;
-  line << std::setprecision(10);
-  for (std::size_t i = 0; i < v.size(); ++i) line << (i ? "," : "") << v[i];
-  out << line.str() << "\n";
+  // Nothing of a row with a non-finite value is written: check first, then format (the check is a small
+  // fraction of the formatting).
+  if (!forEachValue(s, seabed_, [](double x) { return std::isfinite(x); })) return false;
+  bool first = true;
+  forEachValue(s, seabed_, [&](double x) {
+    if (!first) append(',');
+    first = false;
+    append(x);
+    return true;
+  });
+  append('\n');
+  if (used_ >= flush_bytes_) handOver();
   return true;
+}
+
+bool CsvWriter::flush() {
+  handOver();
+  out_.flush();
+  return static_cast<bool>(out_);
+}
+
+void CsvWriter::append(double value) {
+  // A row never outgrows buffer_: writeRow starts with at most flush_bytes_ used and a row is at most
+  // row_bytes_ long.
+  char* first = buffer_.data() + used_;
+  const std::to_chars_result r =
+      std::to_chars(first, first + kMaxNumberChars, value, std::chars_format::general, kCsvSignificantDigits);
+  used_ += static_cast<std::size_t>(r.ptr - first);
+}
+
+void CsvWriter::handOver() {
+  if (used_ == 0) return;
+  out_.write(buffer_.data(), static_cast<std::streamsize>(used_));
+  used_ = 0;
 }
 
 }  // namespace cable_dynamics

@@ -26,6 +26,7 @@ struct CliOptions {
   std::optional<double> sample;          ///< --sample S, output interval [s]
   std::string output;                    ///< --output run.csv
   std::string plot;                      ///< --plot run.png
+  std::string bag;                       ///< --bag run.bag (cable_sim: the node's topics as a rosbag)
   bool help = false;                     ///< --help / -h
   bool statics = false;                  ///< --statics (cable_sim: the static equilibrium only)
 };

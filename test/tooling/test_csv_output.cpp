@@ -1,0 +1,214 @@
+// cable_sim's CSV writer against the iostream formatting it replaced: every number as an ostream with
+// setprecision(10) writes it (printf's %.10g), the columns in the documented order, nothing of a row with a
+// non-finite value, and the same bytes whatever the buffer size.
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <cstdlib>
+#include <new>
+#include <streambuf>
+
+#include <gtest/gtest.h>
+
+#include "cable_dynamics/tools/csv_output.h"
+
+// Heap allocations while g_counting is set (a replaced operator new, as test_node_winch_parts does).
+namespace {
+bool g_counting = false;
+long g_allocations = 0;
+}  // namespace
+void* operator new(std::size_t size) {
+  if (g_counting) ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace cable_dynamics {
+namespace {
+
+/// The reference: an ostream at 10 significant digits, as cable_sim wrote its rows before std::to_chars.
+std::string streamed(double x) {
+  std::ostringstream s;
+  s << std::setprecision(10) << x;
+  return s.str();
+}
+
+/// A snapshot of n links holding `v` in the README's column order, so that a row's values are known
+/// independently of the writer: its i-th field must be v[i].
+SimulationSnapshot snapshotOf(int n, const std::vector<double>& v) {
+  SimulationSnapshot s;
+  std::size_t i = 0;
+  s.time = v[i++];
+  s.q.resize(3 * n);
+  s.qd.resize(3 * n);
+  s.chain.ends.resize(3, n + 1);
+  s.chain.tension.resize(n);
+  for (int j = 0; j < 3 * n; ++j) s.q(j) = v[i++];
+  for (int j = 0; j < 3 * n; ++j) s.qd(j) = v[i++];
+  for (int k = 1; k <= n; ++k) {
+    for (int c = 0; c < 3; ++c) s.chain.ends(c, k) = v[i++];
+  }
+  for (int k = 0; k < n; ++k) s.chain.tension(k) = v[i++];
+  s.line_pull = v[i++];
+  for (int c = 0; c < 3; ++c) s.chain.load_force(c) = v[i++];
+  for (int c = 0; c < 3; ++c) s.chain.base_force(c) = v[i++];
+  s.chain.kinetic_energy = v[i++];
+  s.chain.potential_energy = v[i++];
+  s.chain.elastic_energy = v[i++];
+  s.dissipated_energy = v[i++];
+  s.work_input = v[i++];
+  s.total_energy = v[i++];
+  for (int c = 0; c < 3; ++c) s.chain.ends(c, 0) = v[i++];
+  s.deployed_length = v[i++];
+  s.winch_speed = v[i++];
+  // deployed_links = n - first_link: the last value
+  s.first_link = n - static_cast<int>(v[i++]);
+  EXPECT_EQ(i, v.size());
+  return s;
+}
+
+/// Values that probe the formatting: zeros of both signs, powers of ten around the switch between fixed
+/// and exponent notation, rounding at the 10th digit, the extremes of a double, and random magnitudes.
+std::vector<double> probeValues(std::size_t count, unsigned seed) {
+  std::vector<double> v = {0.0, -0.0, 1.0, -1.0, 0.1, 1e-5, 1e-4, 9.9999999995e-5, 123456789.0, 1234567890.0,
+                           12345678901.0, 9999999999.5, 0.30000000000000004, 2.5e-10, -7.77e22,
+                           std::numeric_limits<double>::max(), std::numeric_limits<double>::min(),
+                           std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::max(),
+                           5e-324, 1.7976931348623157e308, 0.5, 1.0 / 3.0, -2.0 / 3.0, 1e15, 1e16, 1e17};
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
+  std::uniform_int_distribution<int> exponent(-320, 300);
+  while (v.size() < count) v.push_back(mantissa(rng) * std::pow(10.0, exponent(rng)));
+  v.resize(count);
+  return v;
+}
+
+TEST(CsvOutput, NumbersAsTheStreamWroteThem) {
+  // 200 rows of n = 100 (1020 values each, about 200,000 numbers), compared with the stream's text.
+  const int n = 100;
+  const std::size_t per_row = csvColumns(n).size();
+  ASSERT_EQ(per_row, 1 + 10 * n + 19u);  // time, 3n q, 3n rates, 3n ends, n tensions, 19 scalars
+  for (unsigned seed = 1; seed <= 200; ++seed) {
+    std::vector<double> v = probeValues(per_row, seed);
+    v.back() = 37;  // deployed_links: a count
+    std::ostringstream out;
+    {
+      CsvWriter writer(out, n);
+      ASSERT_TRUE(writer.writeRow(snapshotOf(n, v)));
+      ASSERT_TRUE(writer.flush());
+    }
+    std::string expected;
+    for (std::size_t i = 0; i < v.size(); ++i) expected += (i ? "," : "") + streamed(v[i]);
+    expected += "\n";
+    ASSERT_EQ(out.str(), expected) << "seed " << seed;
+  }
+}
+
+TEST(CsvOutput, HeaderNamesEveryColumn) {
+  std::ostringstream out;
+  {
+    CsvWriter writer(out, 2);
+    writer.writeHeader();
+  }
+  EXPECT_EQ(out.str(),
+            "time,joint_1_elevation,joint_1_azimuth,joint_1_torsion,joint_2_elevation,joint_2_azimuth,joint_2_torsion,"
+            "joint_1_elevation_rate,joint_1_azimuth_rate,joint_1_torsion_rate,joint_2_elevation_rate,"
+            "joint_2_azimuth_rate,joint_2_torsion_rate,end1_x,end1_y,end1_z,end2_x,end2_y,end2_z,tension1,tension2,"
+            "top_tension,load_force_x,load_force_y,load_force_z,base_force_x,base_force_y,base_force_z,"
+            "kinetic_energy,potential_energy,elastic_energy,dissipated_energy,work_input,total_energy,base_x,base_y,"
+            "base_z,deployed_length,winch_speed,deployed_links\n");
+}
+
+TEST(CsvOutput, NonFiniteRowWritesNothing) {
+  const int n = 3;
+  const std::size_t per_row = csvColumns(n).size();
+  for (double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+    for (std::size_t at : {std::size_t{0}, per_row / 2, per_row - 2}) {
+      std::vector<double> v(per_row, 1.5);
+      v.back() = 3;
+      std::ostringstream out;
+      CsvWriter writer(out, n);
+      ASSERT_TRUE(writer.writeRow(snapshotOf(n, v)));
+      v[at] = bad;
+      EXPECT_FALSE(writer.writeRow(snapshotOf(n, v))) << "value " << at;
+      ASSERT_TRUE(writer.flush());
+      const std::string text = out.str();
+      EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << "value " << at;  // the good row only
+    }
+  }
+}
+
+TEST(CsvOutput, SameBytesWhateverTheBufferSize) {
+  const int n = 20;
+  const std::size_t per_row = csvColumns(n).size();
+  std::vector<std::string> outputs;
+  for (std::size_t flush_bytes : {std::size_t{1}, std::size_t{1000}, std::size_t{1} << 18}) {
+    std::ostringstream out;
+    {
+      CsvWriter writer(out, n, flush_bytes);
+      writer.writeHeader();
+      for (unsigned row = 0; row < 300; ++row) {
+        std::vector<double> v = probeValues(per_row, 1000 + row);
+        v.back() = 20;
+        ASSERT_TRUE(writer.writeRow(snapshotOf(n, v)));
+      }
+    }  // the destructor flushes
+    outputs.push_back(out.str());
+  }
+  EXPECT_EQ(std::count(outputs[0].begin(), outputs[0].end(), '\n'), 301);
+  EXPECT_EQ(outputs[0], outputs[1]);
+  EXPECT_EQ(outputs[0], outputs[2]);
+}
+
+/// A stream that counts what it is given and keeps nothing (so that the stream itself never allocates).
+class CountingSink : public std::streambuf {
+ public:
+  std::size_t bytes = 0;
+
+ protected:
+  std::streamsize xsputn(const char*, std::streamsize n) override {
+    bytes += static_cast<std::size_t>(n);
+    return n;
+  }
+  int_type overflow(int_type c) override {
+    ++bytes;
+    return c;
+  }
+};
+
+TEST(CsvOutput, NoAllocationPerRow) {
+  // Rows of n = 100, through many hand-overs of the buffer (flush_bytes 64 KiB: about every 6 rows).
+  const int n = 100;
+  std::vector<double> v = probeValues(csvColumns(n).size(), 7);
+  v.back() = 100;
+  const SimulationSnapshot snapshot = snapshotOf(n, v);
+  CountingSink sink;
+  std::ostream out(&sink);
+  CsvWriter writer(out, n, 1 << 16);
+  writer.writeHeader();
+  g_counting = true;
+  for (int row = 0; row < 500; ++row) ASSERT_TRUE(writer.writeRow(snapshot));
+  ASSERT_TRUE(writer.flush());
+  g_counting = false;
+  EXPECT_EQ(g_allocations, 0);
+  EXPECT_GT(sink.bytes, 500u * 1020u * 2u);  // the rows went out (at least 2 characters a value)
+}
+
+TEST(CsvOutput, WrongSizeNamed) {
+  std::ostringstream out;
+  CsvWriter writer(out, 4);
+  std::vector<double> v(csvColumns(3).size(), 1.0);
+  v.back() = 3;
+  EXPECT_THROW(writer.writeRow(snapshotOf(3, v)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cable_dynamics
