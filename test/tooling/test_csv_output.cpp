@@ -69,11 +69,21 @@ SimulationSnapshot snapshotOf(int n, const std::vector<double>& v) {
   for (int c = 0; c < 3; ++c) s.chain.ends(c, 0) = v[i++];
   s.deployed_length = v[i++];
   s.winch_speed = v[i++];
-  // deployed_links = n - first_link: the last value
+  // deployed_links = n - first_link
   s.first_link = n - static_cast<int>(v[i++]);
+  // The seabed's seven (without the per-link columns, which only a seabed's CSV has).
+  s.chain.contact_energy = v[i++];
+  s.chain.seabed.grounded_length = v[i++];
+  s.chain.seabed.touching = true;  // otherwise the writer puts -1 for the touchdown's arc length
+  s.chain.seabed.touchdown_arc_length = v[i++];
+  for (int c = 0; c < 3; ++c) s.chain.seabed.touchdown(c) = v[i++];
+  s.chain.seabed.max_penetration = v[i++];
   EXPECT_EQ(i, v.size());
   return s;
 }
+
+/// The deployed_links value of a row of values (a count: set it to one), 8 from the end.
+double& deployedLinks(std::vector<double>& v) { return v[v.size() - 8]; }
 
 /// Values that probe the formatting: zeros of both signs, powers of ten around the switch between fixed
 /// and exponent notation, rounding at the 10th digit, the extremes of a double, and random magnitudes.
@@ -92,13 +102,13 @@ std::vector<double> probeValues(std::size_t count, unsigned seed) {
 }
 
 TEST(CsvOutput, NumbersAsTheStreamWroteThem) {
-  // 200 rows of n = 100 (1020 values each, about 200,000 numbers), compared with the stream's text.
+  // 200 rows of n = 100 (1027 values each, about 200,000 numbers), compared with the stream's text.
   const int n = 100;
   const std::size_t per_row = csvColumns(n).size();
-  ASSERT_EQ(per_row, 1 + 10 * n + 19u);  // time, 3n q, 3n rates, 3n ends, n tensions, 19 scalars
+  ASSERT_EQ(per_row, 1 + 10 * n + 26u);  // time, 3n q, 3n rates, 3n ends, n tensions, 26 scalars
   for (unsigned seed = 1; seed <= 200; ++seed) {
     std::vector<double> v = probeValues(per_row, seed);
-    v.back() = 37;  // deployed_links: a count
+    deployedLinks(v) = 37;  // deployed_links: a count
     std::ostringstream out;
     {
       CsvWriter writer(out, n);
@@ -124,7 +134,8 @@ TEST(CsvOutput, HeaderNamesEveryColumn) {
             "joint_2_azimuth_rate,joint_2_torsion_rate,end1_x,end1_y,end1_z,end2_x,end2_y,end2_z,tension1,tension2,"
             "top_tension,load_force_x,load_force_y,load_force_z,base_force_x,base_force_y,base_force_z,"
             "kinetic_energy,potential_energy,elastic_energy,dissipated_energy,work_input,total_energy,base_x,base_y,"
-            "base_z,deployed_length,winch_speed,deployed_links\n");
+            "base_z,deployed_length,winch_speed,deployed_links,contact_energy,grounded_length,touchdown_arc_length,"
+            "touchdown_x,touchdown_y,touchdown_z,max_penetration\n");
 }
 
 TEST(CsvOutput, NonFiniteRowWritesNothing) {
@@ -133,7 +144,7 @@ TEST(CsvOutput, NonFiniteRowWritesNothing) {
   for (double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
     for (std::size_t at : {std::size_t{0}, per_row / 2, per_row - 2}) {
       std::vector<double> v(per_row, 1.5);
-      v.back() = 3;
+      deployedLinks(v) = 3;
       std::ostringstream out;
       CsvWriter writer(out, n);
       ASSERT_TRUE(writer.writeRow(snapshotOf(n, v)));
@@ -157,7 +168,7 @@ TEST(CsvOutput, SameBytesWhateverTheBufferSize) {
       writer.writeHeader();
       for (unsigned row = 0; row < 300; ++row) {
         std::vector<double> v = probeValues(per_row, 1000 + row);
-        v.back() = 20;
+        deployedLinks(v) = 20;
         ASSERT_TRUE(writer.writeRow(snapshotOf(n, v)));
       }
     }  // the destructor flushes
@@ -188,7 +199,7 @@ TEST(CsvOutput, NoAllocationPerRow) {
   // Rows of n = 100, through many hand-overs of the buffer (flush_bytes 64 KiB: about every 6 rows).
   const int n = 100;
   std::vector<double> v = probeValues(csvColumns(n).size(), 7);
-  v.back() = 100;
+  deployedLinks(v) = 100;
   const SimulationSnapshot snapshot = snapshotOf(n, v);
   CountingSink sink;
   std::ostream out(&sink);
@@ -199,15 +210,41 @@ TEST(CsvOutput, NoAllocationPerRow) {
   ASSERT_TRUE(writer.flush());
   g_counting = false;
   EXPECT_EQ(g_allocations, 0);
-  EXPECT_GT(sink.bytes, 500u * 1020u * 2u);  // the rows went out (at least 2 characters a value)
+  EXPECT_GT(sink.bytes, 500u * 1027u * 2u);  // the rows went out (at least 2 characters a value)
 }
 
 TEST(CsvOutput, WrongSizeNamed) {
   std::ostringstream out;
   CsvWriter writer(out, 4);
   std::vector<double> v(csvColumns(3).size(), 1.0);
-  v.back() = 3;
+  deployedLinks(v) = 3;
   EXPECT_THROW(writer.writeRow(snapshotOf(3, v)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cable_dynamics
+
+namespace cable_dynamics {
+namespace {
+
+TEST(CsvOutput, ASeabedsCsvEndsWithTheNormalForcePerLink) {
+  const int n = 3;
+  std::vector<double> v(csvColumns(n).size(), 1.5);
+  deployedLinks(v) = 3;
+  SimulationSnapshot s = snapshotOf(n, v);
+  s.chain.seabed.normal_force = Eigen::Vector3d(0.0, 12.5, -0.25);
+  std::ostringstream out;
+  {
+    CsvWriter writer(out, n, CsvWriter::kDefaultFlushBytes, true);
+    writer.writeHeader();
+    ASSERT_TRUE(writer.writeRow(s));
+  }
+  const std::string text = out.str();
+  const std::string header = text.substr(0, text.find('\n'));
+  EXPECT_NE(header.find(",max_penetration,seabed_normal1,seabed_normal2,seabed_normal3"), std::string::npos);
+  const std::string row = text.substr(text.find('\n') + 1);
+  EXPECT_EQ(row.substr(row.size() - std::string(",1.5,0,12.5,-0.25\n").size()), ",1.5,0,12.5,-0.25\n");
+  EXPECT_EQ(csvColumns(n, true).size(), csvColumns(n).size() + n);
 }
 
 }  // namespace
