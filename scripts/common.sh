@@ -18,7 +18,8 @@ DEB_PACKAGES=(
   python3-sympy python3-numpy python3-pytest python3-yaml python3-matplotlib libmujoco-dev
   libtf2-eigen-dev libtinyxml-dev rviz xvfb imagemagick python3-tf2-ros python3-diagnostic-msgs
   python3-visualization-msgs python3-rosgraph-msgs python3-rosmsg python3-roslaunch python3-rosunit python3-roslib
-  python3-rosgraph
+  python3-rosgraph libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure libnodeletlib-dev
+  libnodeletlib-tools python3-nodelet
 )
 
 # Installs the Debian packages that are missing (apt-get update first), as root or through sudo.

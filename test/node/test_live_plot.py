@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+"""scripts/live_plot.py as a user starts it, headless: it subscribes to cable_state, draws off screen
+(Agg, no DISPLAY) and writes its figure on SIGUSR1 and on exit (SIGINT). The PNG must hold the curves:
+pixels of the first curve's colour (matplotlib's C0, #1f77b4) in the force panel and in the energy
+panel, beyond the legend's short sample line."""
+import os
+import re
+import signal
+import subprocess
+import tempfile
+import time
+import unittest
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.image  # noqa: E402
+import numpy  # noqa: E402
+import rosgraph  # noqa: E402
+import rospkg  # noqa: E402
+import rospy  # noqa: E402
+import rosunit  # noqa: E402
+
+NS = "/plot_test"
+C0 = numpy.array([0x1F, 0x77, 0xB4]) / 255.0
+
+
+def c0_pixels(image):
+    return int(numpy.sum(numpy.all(numpy.abs(image[:, :, :3] - C0) < 0.03, axis=2)))
+
+
+class LivePlot(unittest.TestCase):
+    def wait(self, what, condition, seconds):
+        deadline = time.time() + seconds
+        while not condition() and time.time() < deadline:
+            time.sleep(0.1)
+        self.assertTrue(condition(), what)
+
+    def test_draws_headless_and_writes_its_png(self):
+        script = os.path.join(rospkg.RosPack().get_path("cable_dynamics"), "scripts", "live_plot.py")
+        png = os.path.join(tempfile.mkdtemp(prefix="live_plot_"), "plot.png")
+        env = dict(os.environ)
+        env.pop("DISPLAY", None)  # headless, as on a server: the script picks Agg itself
+        env.pop("MPLBACKEND", None)
+        plot = subprocess.Popen([script, "__ns:=" + NS, "__name:=live_plot", "_png:=" + png, "_window:=30"],
+                                env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        try:
+            master = rosgraph.Master("/test_live_plot")
+
+            def subscribed():
+                _, subscribers, _ = master.getSystemState()
+                return NS + "/live_plot" in dict(subscribers).get(NS + "/cable_state", [])
+
+            self.wait("live_plot subscribes to %s/cable_state" % NS, subscribed, 60.0)
+            time.sleep(3.0)  # ~300 states at 100 Hz
+            plot.send_signal(signal.SIGUSR1)
+            self.wait("the PNG on SIGUSR1", lambda: os.path.exists(png), 20.0)
+            first = matplotlib.image.imread(png)
+            time.sleep(1.0)
+            plot.send_signal(signal.SIGINT)
+            output, _ = plot.communicate(timeout=30.0)
+        finally:
+            if plot.poll() is None:
+                plot.kill()
+                plot.communicate()
+        print(output)
+        self.assertEqual(plot.returncode, 0, output)
+        samples = re.search(r"live_plot: (\d+) samples, wrote", output)
+        self.assertIsNotNone(samples, output)
+        self.assertGreater(int(samples.group(1)), 200)  # 4 s at 100 Hz, with room for a loaded machine
+        image = matplotlib.image.imread(png)
+        self.assertEqual(image.shape[:2], (480, 720))  # 9 x 6 in at 80 dpi
+        self.assertEqual(first.shape, image.shape)
+        top, bottom = image[: image.shape[0] // 2], image[image.shape[0] // 2:]
+        # The legend's sample line alone is ~30 pixels; a curve across the panel is hundreds.
+        self.assertGreater(c0_pixels(top), 150, "top tension curve")
+        self.assertGreater(c0_pixels(bottom), 150, "kinetic energy curve")
+
+
+if __name__ == "__main__":
+    rospy.init_node("test_live_plot", anonymous=True)
+    rosunit.unitrun("cable_dynamics", "live_plot", LivePlot)
