@@ -11,3 +11,6 @@ foreach(script test_tuning_node.py test_nodelet.py test_live_plot.py)
   execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
 endforeach()
+# No copies in the process: a subscriber there receives the SharedPublisher's own message object.
+add_rostest_gtest(test_shared_messages test/shared_messages.test test/node/test_shared_messages.cpp)
+target_link_libraries(test_shared_messages cable_dynamics_ros ${GTEST_LIBRARIES})

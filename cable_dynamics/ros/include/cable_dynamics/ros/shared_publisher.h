@@ -36,6 +36,9 @@ class SharedPublisher {
     publisher_.publish(message_);
   }
 
+  /// The message last published (what a subscriber in this process receives).
+  boost::shared_ptr<const M> message() const { return message_; }
+
  private:
   ros::Publisher publisher_;
   boost::shared_ptr<M> message_;
