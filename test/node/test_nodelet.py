@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The cable as a nodelet (test/nodelet.test): cable_dynamics/CableNodelet loaded into a manager publishes
 cable_state and joint_states (test/node/node_test.yaml: 6 links, so 18 joints) from the manager's process,
-and offers the same services and live tuning as the standalone node."""
+and offers the same services and live tuning as the standalone node; a second nodelet with a bad
+parameter in the same manager stays idle without stopping it."""
 import time
 import unittest
 
@@ -43,6 +44,14 @@ class Nodelet(unittest.TestCase):
         self.assertEqual(providers.get(NS + "/cable/tuning/set_parameters"), [NS + "/manager"])
         model = rospy.ServiceProxy(NS + "/get_model", GetModel)()
         self.assertEqual(len(model.q), 18)
+
+        # The nodelet with cable.links = 0 (test/nodelet.test) runs nothing, in the same manager, which
+        # goes on hosting the good one: nothing of it on the graph, cable_state still coming.
+        self.assertNotIn("/bad_nodelet/cable_state", by_topic)
+        self.assertNotIn("/bad_nodelet/get_model", providers)
+        count = len(got["states"])
+        time.sleep(1.0)
+        self.assertGreater(len(got["states"]), count + 20)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// \brief The chain's constants, built once per cable from its parameters and never changed: the
-///        "model" half of the model/data split (ChainData holds everything that changes).
+/// \brief The chain's constants, built once per cable from its parameters and never changed by a step:
+///        the "model" half of the model/data split (ChainData holds everything that changes). Live
+///        tuning replaces the whole model between steps (CableSimulator::retune).
 
 #include <vector>
 
