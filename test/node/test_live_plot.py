@@ -11,6 +11,7 @@ import subprocess
 import tempfile
 import time
 import unittest
+import xmlrpc.client
 
 import matplotlib
 
@@ -77,6 +78,29 @@ class LivePlot(unittest.TestCase):
         print("coloured pixels: forces %d, energies %d" % (curve_pixels(top), curve_pixels(bottom)))
         self.assertGreater(curve_pixels(top), 1000, "force curves")
         self.assertGreater(curve_pixels(bottom), 1000, "energy curves")
+
+    def test_demo_launch_starts_it(self):
+        """demo.launch plot:=true plot_png:=... (test/live_plot.test): the plot subscribes to the demo's
+        cable_state and writes its PNG when signalled (SIGUSR1, to the pid the node reports)."""
+        png = rospy.get_param("/umbilical/live_plot/png")  # as the launch gave it (plot_png)
+        self.assertTrue(png.endswith(".png"), png)
+        master = rosgraph.Master("/test_live_plot")
+
+        def subscribed():
+            _, subscribers, _ = master.getSystemState()
+            return "/umbilical/live_plot" in dict(subscribers).get("/umbilical/cable_state", [])
+
+        self.wait("the demo's live_plot subscribes to /umbilical/cable_state", subscribed, 60.0)
+        time.sleep(3.0)
+        pid = xmlrpc.client.ServerProxy(master.lookupNode("/umbilical/live_plot")).getPid("/test_live_plot")[2]
+        os.kill(pid, signal.SIGUSR1)
+        self.wait("the demo's PNG on SIGUSR1", lambda: os.path.exists(png), 20.0)
+        image = matplotlib.image.imread(png)
+        print("demo plot: coloured pixels: forces %d, energies %d"
+              % (curve_pixels(image[:240]), curve_pixels(image[240:])))
+        self.assertGreater(curve_pixels(image[:240]), 1000, "force curves")
+        self.assertGreater(curve_pixels(image[240:]), 1000, "energy curves")
+        os.remove(png)
 
 
 if __name__ == "__main__":
