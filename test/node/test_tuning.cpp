@@ -29,7 +29,10 @@ const std::vector<std::string> kTuned = {"fluid.drag_normal=2.5", "fluid.drag_ta
                                          "load.coupling.damping=300.0"};
 
 void run(CableSimulator& sim, int steps) {
-  for (int i = 0; i < steps; ++i) ASSERT_TRUE(sim.step().ok) << "step " << i;
+  for (int i = 0; i < steps; ++i) {
+    const StepReport r = sim.step();
+    ASSERT_TRUE(r.ok) << "step " << i << ": " << r.message;
+  }
 }
 
 double maxDifference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).cwiseAbs().maxCoeff(); }
@@ -37,18 +40,30 @@ double maxDifference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { retur
 }  // namespace
 
 // The rebuilt constants are those a simulator built with the tuned values has: the same arithmetic, so
-// the same states to the last bit over 1 s (a missed constant would show at once).
+// the same states to the last bit over 1 s (a missed constant would show at once), for both time schemes
+// and both formulations.
 TEST(Retune, BeforeTheFirstStepEqualsConfiguringTheValues) {
-  CableSimulator tuned(loadConfigString(kCable));
-  tuned.retune(loadConfigString(kCable, kTuned));
-  CableSimulator configured(loadConfigString(kCable, kTuned));
-  run(tuned, 500);
-  run(configured, 500);
-  EXPECT_EQ(maxDifference(tuned.state(), configured.state()), 0.0);
-  // And the values matter: the untuned cable is elsewhere by then.
-  CableSimulator untuned(loadConfigString(kCable));
-  run(untuned, 500);
-  EXPECT_GT(maxDifference(untuned.state(), configured.state()), 1e-3);
+  for (const std::vector<std::string> variant :
+       {std::vector<std::string>{},
+        // (This cable's torsion runs away under the semi-implicit step at 0.88 s with its ROV coupling,
+        // configured or tuned alike: the semi-implicit variant hangs free.)
+        {"simulation.integrator=semi_implicit", "load.mode=free"},
+        {"simulation.formulation=paper"}}) {
+    std::vector<std::string> tuned_values = kTuned;
+    tuned_values.insert(tuned_values.end(), variant.begin(), variant.end());
+    SCOPED_TRACE(variant.empty() ? "rk4, recursive" : variant[0]);
+    CableSimulator tuned(loadConfigString(kCable, variant));
+    tuned.retune(loadConfigString(kCable, tuned_values));
+    CableSimulator configured(loadConfigString(kCable, tuned_values));
+    run(tuned, 500);
+    run(configured, 500);
+    const std::string name = variant.empty() ? "rk4, recursive" : variant[0];
+    EXPECT_EQ(maxDifference(tuned.state(), configured.state()), 0.0) << name;
+    // And the values matter: the untuned cable is elsewhere by then.
+    CableSimulator untuned(loadConfigString(kCable, variant));
+    run(untuned, 500);
+    EXPECT_GT(maxDifference(untuned.state(), configured.state()), 1e-3) << name;
+  }
 }
 
 // Mid-run: the state and the time carry on through the retune, and from there the cable moves as one
