@@ -44,6 +44,8 @@ DEB_PACKAGES=(
   # roslaunch, rosbag (play, info, record) and rosbag's C++ storage that cable_sim's --bag writes with.
   rosbash rospack-tools python3-rostopic python3-rosservice python3-rosparam python3-rosnode python3-rosbag
   librosbag-storage-dev libtf2-msgs-dev
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure libnodeletlib-dev
+  libnodeletlib-tools python3-nodelet
 )
 
 # Installs the Debian packages that are missing (apt-get update first), as root or through sudo.

@@ -38,6 +38,23 @@ initial: {elevation: 0.3}
 
 TEST(NoAllocation, RecursiveRk4Step) { expectNoAllocation({"simulation.formulation=recursive"}); }
 
+// Live tuning rebuilds the chain's constants between steps (that allocates); the steps after it do not.
+TEST(NoAllocation, StepAfterARetune) {
+  const char* cable =
+      "cable: {links: 8, length: 16.0, diameter: 0.03, mass_per_length: 1.0}\n"
+      "load: {mass: 5.0, volume: 0.002, mode: attached}\n"
+      "fluid: {density: 1025.0, current: [1.0, 0.2, 0.0]}\n"
+      "initial: {elevation: 0.3}\n";
+  CableSimulator sim(loadConfigString(cable));
+  ASSERT_TRUE(sim.step().ok);
+  sim.retune(loadConfigString(cable, {"fluid.drag_normal=2.0", "fluid.added_mass=0.5", "load.coupling.damping=100"}));
+  Eigen::internal::set_is_malloc_allowed(false);
+  bool ok = true;
+  for (int i = 0; i < 20; ++i) ok = sim.step().ok && ok;
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_TRUE(ok);
+}
+
 TEST(NoAllocation, RecursiveRk4StepInADepthProfile) {
   // The drag point by point (a current that changes with depth) instead of the uniform shortcut.
   expectNoAllocation({"fluid.current=[0, 0, 0]", "fluid.current_profile=[[0, 1.0, 0.2, 0.0], [20, 0.3, 0.0, 0.0]]"});

@@ -39,6 +39,7 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/simulation/step_check.cpp
   ${CABLE_CORE_DIR}/src/simulation/stable_step.cpp
   ${CABLE_CORE_DIR}/src/simulation/cable_simulator.cpp
+  ${CABLE_CORE_DIR}/src/simulation/tuning.cpp
   ${CABLE_CORE_DIR}/src/simulation/link_frames.cpp
   # statics: the equilibrium shape (the equations link by link, the starting guesses, Newton)
   ${CABLE_CORE_DIR}/src/statics/static_equations.cpp

@@ -53,3 +53,8 @@ add_rostest_gtest(test_body_poses test/body_poses.test test/node/test_body_poses
 target_include_directories(test_body_poses PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS})
 target_link_libraries(test_body_poses ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 add_dependencies(test_body_poses cable_dynamics_node)
+
+# Issue 16: live tuning (retune against configured simulators, the checks against the loader's ranges;
+# no roscore), then over ROS: dynamic_reconfigure (tuning.test), the nodelet (nodelet.test), the live
+# plot (live_plot.test).
+include(${CMAKE_CURRENT_LIST_DIR}/ros_parts_tests.cmake)

@@ -13,6 +13,7 @@
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/input_log.h"
 #include "cable_dynamics/ros/reset_request.h"
+#include "cable_dynamics/ros/tuning_checks.h"
 #include "cable_dynamics/ros/winch_request.h"
 
 namespace cable_dynamics {
@@ -34,7 +35,7 @@ const char* loadModeName(LoadMode mode) {
 
 CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), private_nh_(private_nh), tf_listener_(tf_buffer_), clock_(1.0) {
-  loadNodeParameters(private_nh_, params_, options_);
+  loadNodeParameters(private_nh_, params_, options_, &config_tree_, &ros_tree_);
   sim_ = std::make_unique<CableSimulator>(params_);  // throws std::invalid_argument on a refused combination
   requireStableTimeStep(params_, sim_->properties());  // a dt beyond RK4's reach: refused at start, naming it
   joints_ = std::make_unique<ElasticJoints>(sim_->properties());
@@ -82,9 +83,13 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   source_.spring_force = Eigen::VectorXd::Zero(3 * params_.links);
   source_.alpha_hint = Eigen::VectorXd::Zero(params_.links);
 
-  joint_pub_ = nh_.advertise<sensor_msgs::JointState>("joint_states", 10);
-  state_pub_ = nh_.advertise<cable_msgs::CableState>("cable_state", 10);
-  marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("cable_markers", 2);
+  joint_pub_.advertise(nh_, "joint_states", 10);
+  state_pub_.advertise(nh_, "cable_state", 10);
+  marker_pub_.advertise(nh_, "cable_markers", 2);
+  wrench_pub_.advertise(nh_, "rov_wrench", 10);
+  wrench_world_pub_.advertise(nh_, "rov_wrench_world", 10);
+  base_wrench_pub_.advertise(nh_, "base_wrench", 10);
+  base_wrench_world_pub_.advertise(nh_, "base_wrench_world", 10);
   if (params_.seabed.enabled) {
     // The bottom once, latched (a late rviz still gets it); the links on it with every output.
     seabed_pub_ = nh_.advertise<visualization_msgs::Marker>("seabed_marker", 1, true);
@@ -92,10 +97,6 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     contact_pub_ = nh_.advertise<visualization_msgs::Marker>("seabed_contact_marker", 2);
     contact_marker_ = contactMarker(params_, options_.world_frame);
   }
-  wrench_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("rov_wrench", 10);
-  wrench_world_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("rov_wrench_world", 10);
-  base_wrench_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("base_wrench", 10);
-  base_wrench_world_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("base_wrench_world", 10);
   diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 5);
   rov_sub_ = nh_.subscribe("rov_pose", kInputQueueSize, &CableNode::onRovPose, this);
   base_sub_ = nh_.subscribe("base_pose", kInputQueueSize, &CableNode::onBasePose, this);
@@ -107,7 +108,89 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   equilibrium_srv_ = nh_.advertiseService("reset_to_equilibrium", &CableNode::onResetToEquilibrium, this);
   model_srv_ = nh_.advertiseService("get_model", &CableNode::onGetModel, this);
   pause_srv_ = nh_.advertiseService("set_paused", &CableNode::onSetPaused, this);
+  tuned_ = tunableValuesOf(params_, options_.rate);
+  tuning_ = std::make_unique<LiveTuning>(ros::NodeHandle(private_nh_, "tuning"), tuned_,
+                                         [this](const TunableValues& wanted, unsigned levels) {
+                                           return applyTuning(wanted, levels);
+                                         });
   timer_ = nh_.createTimer(ros::Duration(1.0 / options_.rate), &CableNode::onTimer, this);
+}
+
+bool CableNode::currentTopicActive() const {
+  return !last_current_accepted_.isZero() &&
+         std::abs((ros::Time::now() - last_current_accepted_).toSec()) <= options_.input_timeout;
+}
+
+TunableValues CableNode::applyTuning(const TunableValues& wanted, unsigned levels) {
+  // Each part on its own: one refused value does not hold back the others of the same request.
+  const auto refused = [](const char* part, const std::string& why) {
+    ROS_WARN_STREAM("cable_dynamics: tuning: " << part << " refused, the old value stays: " << why);
+  };
+  if (levels & kTuneCurrent) {
+    try {
+      checkTunedCurrent(wanted.current);
+      if (currentTopicActive()) {
+        throw std::invalid_argument("the current topic publishes (a message accepted within ros.input_timeout = " +
+                                    std::to_string(options_.input_timeout) + " s): it sets the current");
+      }
+      sim_->setCurrent(wanted.current);
+      tuned_.current = wanted.current;
+      current_tuned_ = true;
+      ROS_INFO_STREAM("cable_dynamics: tuning: current [" << wanted.current.transpose() << "] m/s");
+    } catch (const std::invalid_argument& e) {
+      refused("current", e.what());
+    }
+  }
+  if (levels & kTuneCoefficients) {
+    try {
+      YAML::Node tree;
+      const CableParams tuned = tunedParams(config_tree_, wanted, tree);  // ConfigError: key, value, range
+      sim_->retune(tuned);  // RK4's stable step too; rebuilds the chain's constants between two cycles
+      params_ = tuned;
+      config_tree_ = tree;
+      tuned_.drag_normal = wanted.drag_normal;
+      tuned_.drag_tangential = wanted.drag_tangential;
+      tuned_.added_mass = wanted.added_mass;
+      tuned_.coupling_stiffness = wanted.coupling_stiffness;
+      tuned_.coupling_damping = wanted.coupling_damping;
+      ROS_INFO_STREAM("cable_dynamics: tuning: drag_normal " << wanted.drag_normal << ", drag_tangential "
+                      << wanted.drag_tangential << ", added_mass " << wanted.added_mass << ", coupling "
+                      << wanted.coupling_stiffness << " N/m, " << wanted.coupling_damping << " N s/m");
+    } catch (const std::invalid_argument& e) {
+      refused("coefficients", e.what());
+    }
+  }
+  if (levels & kTuneRate) {
+    try {
+      checkTunedRate(ros_tree_, wanted.rate);
+      if (!ros_tree_.IsMap()) ros_tree_ = YAML::Node(YAML::NodeType::Map);
+      ros_tree_["rate"] = wanted.rate;
+      options_.rate = wanted.rate;
+      tuned_.rate = wanted.rate;
+      timer_.setPeriod(ros::Duration(1.0 / wanted.rate));
+      ROS_INFO_STREAM("cable_dynamics: tuning: rate " << wanted.rate << " Hz");
+    } catch (const std::invalid_argument& e) {
+      refused("rate", e.what());
+    }
+  }
+  if (levels & kTunePause) setPaused(wanted.paused);
+  if (levels & kTuneWinch) {
+    std::string why;
+    if (checkTunedWinchSpeed(wanted.winch_speed, params_.winch, why)) {
+      if (sim_->hasWinch()) sim_->commandWinchSpeed(wanted.winch_speed);
+      tuned_.winch_speed = wanted.winch_speed;
+      ROS_INFO_STREAM("cable_dynamics: tuning: winch speed " << wanted.winch_speed << " m/s");
+    } else {
+      refused("winch_speed", why);
+    }
+  }
+  return tuned_;
+}
+
+void CableNode::setPaused(bool paused) {
+  if (status_.paused && !paused) restartClock();  // resume where it stopped: the pause is not simulated
+  status_.paused = paused;
+  tuned_.paused = paused;
 }
 
 bool CableNode::resolveFrame(const std::string& frame, Eigen::Isometry3d& world_from_frame) {
@@ -148,14 +231,16 @@ void CableNode::onCurrent(const geometry_msgs::TwistStamped::ConstPtr& msg) {
   Eigen::Vector3d current;
   const InputVerdict verdict = guard_->current(*msg, ros::Time::now(), resolver_, current);
   logInput("current", verdict, guard_->counters(), options_);
-  if (isAccepted(verdict)) sim_->setCurrent(current);
+  if (!isAccepted(verdict)) return;
+  sim_->setCurrent(current);
+  last_current_accepted_ = ros::Time::now();
 }
 
 void CableNode::onWinchSpeed(const std_msgs::Float64::ConstPtr& msg) {
   double speed = 0.0;
   const InputVerdict verdict = guard_->winchSpeed(*msg, speed);
   logWinchSpeed(verdict, guard_->counters(), params_.winch.max_speed);
-  if (isAccepted(verdict)) sim_->commandWinchSpeed(speed);
+  if (isAccepted(verdict)) sim_->commandWinchSpeed(speed);  // replaces a tuned winch_speed (not shown there)
 }
 
 bool CableNode::onSetWinchLength(cable_msgs::SetWinchLength::Request& req,
@@ -314,6 +399,13 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
   }
   restartClock();  // the simulator's time is 0 again
   source_.alpha_hint.setZero();
+  // Tuned coefficients stay (they are the simulator's now); a tuned current is an input like the topic's
+  // and comes back unless the topic publishes; the winch is back at its configured speed.
+  if (current_tuned_ && !currentTopicActive()) sim_->setCurrent(tuned_.current);
+  if (params_.winch.enabled && tuned_.winch_speed != params_.winch.speed) {
+    tuned_.winch_speed = params_.winch.speed;
+    tuning_->show(tuned_);
+  }
   res.success = true;
   res.message = "reset";
   return true;
@@ -365,8 +457,8 @@ bool CableNode::onGetModel(cable_msgs::GetModel::Request&, cable_msgs::GetModel:
 }
 
 bool CableNode::onSetPaused(cable_msgs::SetPaused::Request& req, cable_msgs::SetPaused::Response& res) {
-  if (status_.paused && !req.paused) restartClock();  // resume where it stopped: the pause is not simulated
-  status_.paused = req.paused;
+  setPaused(req.paused);
+  tuning_->show(tuned_);
   res.success = true;
   res.message = status_.paused ? "paused" : "running";
   return true;

@@ -40,7 +40,8 @@ NodeOptions parseNodeOptions(const YAML::Node& ros_section, const std::string& d
   return o;
 }
 
-void loadNodeParameters(const ros::NodeHandle& private_nh, CableParams& params, NodeOptions& options) {
+void loadNodeParameters(const ros::NodeHandle& private_nh, CableParams& params, NodeOptions& options,
+                        YAML::Node* config_tree, YAML::Node* ros_tree) {
   XmlRpc::XmlRpcValue tree;
   YAML::Node root(YAML::NodeType::Map);
   if (private_nh.getParam("", tree) && tree.getType() == XmlRpc::XmlRpcValue::TypeStruct) root = xmlRpcToYaml(tree);
@@ -48,6 +49,7 @@ void loadNodeParameters(const ros::NodeHandle& private_nh, CableParams& params, 
   const bool has_ros = const_root["ros"].IsDefined();
   const YAML::Node ros_section = has_ros ? YAML::Clone(const_root["ros"]) : YAML::Node();
   if (has_ros) root.remove("ros");
+  if (const_root["tuning"].IsDefined()) root.remove("tuning");  // the live-tuning server's own parameters
 
   // Default frame prefix: the node's namespace ("/<ns>/<node>" gives "<ns>/").
   const std::string ns = private_nh.getNamespace();
@@ -57,6 +59,8 @@ void loadNodeParameters(const ros::NodeHandle& private_nh, CableParams& params, 
 
   params = parseConfig(root);
   options = parseNodeOptions(ros_section, default_prefix);
+  if (config_tree) *config_tree = root;
+  if (ros_tree) *ros_tree = ros_section;
 }
 
 }  // namespace cable_dynamics

@@ -1,5 +1,8 @@
 #include "cable_dynamics/dynamics/chain_model.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace cable_dynamics {
 
 ChainModel::ChainModel(const CableParams& params)
@@ -41,6 +44,15 @@ ChainModel::ChainModel(const CableParams& params)
   // Padding lanes past the last link: zero length and mass, 1/I_P = 0; they add nothing anywhere.
   for (LinkConstants& c : lanes_) c = LinkConstants{};
   deploy(params.winch.stored_links);
+}
+
+ChainModel::ChainModel(const CableParams& params, const ChainModel& like) : ChainModel(params) {
+  if (like.links() != n_) {
+    throw std::invalid_argument("cable.links = " + std::to_string(n_) + ": a retuned model must keep the " +
+                                std::to_string(like.links()) + " links of the running one");
+  }
+  if (like.firstLink() != first_) deploy(like.firstLink());
+  if (has_winch_) setWinchLinkLength(like.properties().length(first_));
 }
 
 void ChainModel::setLinkLength(int k, double l) {

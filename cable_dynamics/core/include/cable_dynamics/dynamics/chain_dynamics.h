@@ -49,6 +49,9 @@ class ChainDynamics {
   int links() const { return model_.links(); }
   /// The winch deploys slots [first, n) (ChainModel::deploy); between evaluations only.
   void deploy(int first) { model_.deploy(first); }
+  /// Replaces the constants by `model` (the same cable: same n; live tuning of its coefficients). The
+  /// workspace keeps its sizes; between evaluations only.
+  void replaceModel(const ChainModel& model) { model_ = model; }
   /// What the ends set in the model and the data before any pass: the winch's link length, the clamp.
   /// Every evaluation calls it; the statics call it to see the model as the ends have it now.
   void applyEnds(const EndInputs& ends);

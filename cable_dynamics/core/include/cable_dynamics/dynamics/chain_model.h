@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// \brief The chain's constants, built once per cable from its parameters and never changed: the
-///        "model" half of the model/data split (ChainData holds everything that changes).
+/// \brief The chain's constants, built once per cable from its parameters and never changed by a step:
+///        the "model" half of the model/data split (ChainData holds everything that changes). Live
+///        tuning replaces the whole model between steps (CableSimulator::retune).
 
 #include <vector>
 
@@ -31,6 +32,10 @@ struct LoadConstants {
 class ChainModel {
  public:
   explicit ChainModel(const CableParams& params);
+  /// The cable of `params` deployed as `like` is now (its first slot and its winch link's length): for
+  /// live tuning, where `params` is the same cable with other fluid or coupling coefficients. Builds
+  /// every constant afresh (allocates: between steps, never within one).
+  ChainModel(const CableParams& params, const ChainModel& like);
 
   int links() const { return n_; }
   /// Per-link description; with a winch, of the cable as now deployed (the drum's slots: zero length

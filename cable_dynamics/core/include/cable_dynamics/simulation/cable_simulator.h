@@ -85,6 +85,17 @@ class CableSimulator {
   /// wrong size or a non-finite value.
   void setPaperState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
 
+  /// Live tuning: takes the fluid coefficients (`fluid.drag_normal`, `drag_tangential`, `added_mass`, and
+  /// each section's, as the config loader resolved them) and the load coupling gains
+  /// (`load.coupling.stiffness`, `damping`) from `params`, a re-parse of this cable's config with only
+  /// those keys changed (other keys of `params` are not read), and rebuilds the chain's constants from
+  /// them (simulation/tuning.cpp). Allocates: call it between steps, never within one. The state, the
+  /// time, the deployment, the inputs and the energy bookkeeping carry on (none of these coefficients
+  /// stores energy: drag and added mass only dissipate, the coupling's work is a work input). Throws
+  /// std::invalid_argument, changing nothing, when `params` has another number of links or sections, or
+  /// (RK4) when the new coefficients need a step below simulation.dt (ConfigError naming it and the mode).
+  void retune(const CableParams& params);
+
   /// Advances by one time step dt.
   StepReport step();
 

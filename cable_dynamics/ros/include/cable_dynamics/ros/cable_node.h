@@ -21,21 +21,24 @@
 
 #include "cable_dynamics/dynamics/elastic_joints.h"
 #include "cable_dynamics/ros/input_guard.h"
+#include "cable_dynamics/ros/live_tuning.h"
 #include "cable_dynamics/ros/message_builders.h"
 #include "cable_dynamics/ros/node_options.h"
 #include "cable_dynamics/ros/output_source.h"
 #include "cable_dynamics/ros/rate_window.h"
+#include "cable_dynamics/ros/shared_publisher.h"
 #include "cable_dynamics/ros/sim_clock.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/urdf/cable_urdf.h"
 
 namespace cable_dynamics {
 
-/// One simulated cable in one namespace.
+/// One simulated cable in one namespace: the standalone node (cable_dynamics_node_main.cpp) and the
+/// nodelet (cable_nodelet.cpp) both run one of these on the node handles they are given.
 class CableNode {
  public:
   /// Reads and validates parameters (throws ConfigError / std::invalid_argument naming the key), sets up
-  /// topics, services, the URDF parameter and the timer.
+  /// topics, services, the URDF parameter, the live-tuning server (`~tuning`) and the timer.
   CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:
@@ -55,6 +58,13 @@ class CableNode {
   /// Reads the present state and publishes every output stamped `stamp`; on a non-finite state recovers
   /// the simulator and publishes nothing.
   void publishOutputs(const ros::Time& stamp);
+  /// Live tuning (live_tuning.h): applies each changed part of `wanted` that passes its check, logs each
+  /// refusal (key, value, range) and returns the values in force.
+  TunableValues applyTuning(const TunableValues& wanted, unsigned levels);
+  /// Pauses or resumes (the set_paused service and live tuning).
+  void setPaused(bool paused);
+  /// A current message was accepted within ros.input_timeout: the topic, not the tuning, sets the current.
+  bool currentTopicActive() const;
   /// After the simulator's time was set back to 0 (reset service).
   void restartClock();
   /// Counts a divergence and recovers the simulator (initial shape; time and inputs carry on).
@@ -73,13 +83,25 @@ class CableNode {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  ros::Publisher joint_pub_, state_pub_, marker_pub_, wrench_pub_, diagnostics_pub_;
+  // Shared pointers out: in a nodelet manager, subscribers there get the messages without copies.
+  SharedPublisher<sensor_msgs::JointState> joint_pub_;
+  SharedPublisher<cable_msgs::CableState> state_pub_;
+  SharedPublisher<visualization_msgs::MarkerArray> marker_pub_;
+  SharedPublisher<geometry_msgs::WrenchStamped> wrench_pub_, wrench_world_pub_, base_wrench_pub_, base_wrench_world_pub_;
+  ros::Publisher diagnostics_pub_;
   ros::Publisher seabed_pub_, contact_pub_;  ///< with a seabed: the bottom (latched), the links on it
   visualization_msgs::Marker contact_marker_;
-  ros::Publisher wrench_world_pub_, base_wrench_pub_, base_wrench_world_pub_;
   ros::Subscriber rov_sub_, base_sub_, current_sub_, winch_sub_;
   ros::ServiceServer reset_srv_, equilibrium_srv_, model_srv_, pause_srv_, winch_srv_;
   ros::Timer timer_;
+
+  // Live tuning: the config tree and the `ros` section as read at start (with the tuned values since),
+  // from which each request is checked by the config loader; the values in force.
+  YAML::Node config_tree_, ros_tree_;
+  TunableValues tuned_;
+  bool current_tuned_ = false;        ///< the tuned current replaces the configured one (also after reset)
+  ros::Time last_current_accepted_;   ///< of the current topic; zero before the first
+  std::unique_ptr<LiveTuning> tuning_;
 
   CableOutputs outputs_;  ///< preallocated, written by index every cycle
   OutputSource source_;

@@ -35,6 +35,9 @@ NodeOptions parseNodeOptions(const YAML::Node& ros_section, const std::string& d
 
 /// Reads and validates the private namespace of `private_nh`: the `ros` section into `options`, the rest
 /// with the config loader into `params`. Throws ConfigError naming the key, the value and the allowed range.
-void loadNodeParameters(const ros::NodeHandle& private_nh, CableParams& params, NodeOptions& options);
+/// `~tuning/` belongs to the live-tuning server (dynamic_reconfigure stores its values there) and is not
+/// read. When given, `config_tree` and `ros_tree` get the two parts as read (live tuning re-checks them).
+void loadNodeParameters(const ros::NodeHandle& private_nh, CableParams& params, NodeOptions& options,
+                        YAML::Node* config_tree = nullptr, YAML::Node* ros_tree = nullptr);
 
 }  // namespace cable_dynamics
