@@ -337,9 +337,11 @@ CableParams parseConfig(const YAML::Node& root) {
 
   Section simulation = top.sub("simulation");
   p.simulation.dt = simulation.number("dt", 0.001, 0.0, 0.1, true, "s");
-  p.simulation.integrator = simulation.choice("integrator", "rk4", {"rk4", "semi_implicit"}) == "rk4"
-                                ? Integrator::kRk4
-                                : Integrator::kSemiImplicit;
+  const std::string integrator = simulation.choice("integrator", "rk4", {"rk4", "semi_implicit", "implicit"});
+  p.simulation.integrator = integrator == "rk4"             ? Integrator::kRk4
+                            : integrator == "semi_implicit" ? Integrator::kSemiImplicit
+                                                            : Integrator::kImplicit;
+  p.simulation.rho_infinity = simulation.number("rho_infinity", 1.0, 0.0, 1.0, false, "");
   p.simulation.duration = simulation.number("duration", 10.0, 0.0, 1e7, true, "s");
   p.simulation.formulation = simulation.choice("formulation", "recursive", {"paper", "recursive"}) == "recursive"
                                  ? Formulation::kRecursive

@@ -1,0 +1,240 @@
+/// \file
+/// \brief The articulated-body recursion with effective-inertia terms (stiff_articulated_body.h).
+///
+/// Unknowns per link: its angular acceleration alpha_k and d_k, its base end's acceleration less the
+/// known part a0_k (as in articulated_body.cpp: a_k = a0_k + d_k, d_{k+1} = d_k + l_k alpha_k x u_k).
+/// Spatial quantities are (rotation; translation) pairs at a link's base end in world axes: the link's
+/// Newton-Euler equations about its base end read I_k (alpha_k; d_k) + p_k = W_k - X^T W_{k+1}, with I_k
+/// its spatial inertia (plus the drag's damping and the geometric stiffness, weighted), p_k the bias
+/// (velocity terms, known accelerations, minus the loads), W_k the wrench joint k passes to it and X^T the
+/// shift of a wrench at the far end to the base end (torque + l u x force). Joint k passes the force
+/// rigidly and the torque -Z_k nu_k, nu_k = alpha_k - alpha_{k-1}, Z_k = c_D D_j + c_K K_j.
+///
+/// Backward (tip to base): the outboard part's articulated inertia at joint k, I^A = I_k + X^T I^a X, and
+/// bias p^A; with D = I^A_rr + Z, the joint's motion nu = -D^-1 (U^T X a_parent + p^A_r) (U: I^A's
+/// rotation columns), and the parent sees I^a = I^A - U D^-1 U^T, p^a = p^A - U D^-1 p^A_r. Forward
+/// (base to tip): alpha_k = alpha_{k-1} + nu_k, d_k from the parent's far end.
+#include "cable_dynamics/dynamics/stiff_articulated_body.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include "cable_dynamics/dynamics/fluid.h"
+
+namespace cable_dynamics {
+namespace {
+
+inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return s;
+}
+
+inline Eigen::Matrix3d symmetrized(const Eigen::Matrix3d& m) { return 0.5 * (m + m.transpose()); }
+
+/// Spring (or damper) block of a joint with mean axis m: `across` for bending, `about` for twist.
+inline Eigen::Matrix3d jointBlock(double across, double about, const Eigen::Vector3d& m) {
+  const Eigen::Matrix3d mm = m * m.transpose();
+  return across * (Eigen::Matrix3d::Identity() - mm) + about * mm;
+}
+
+}  // namespace
+
+StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links) {}
+
+void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends) {
+  const int n = model.links(), first = model.firstLink();
+  const LinkProperties& p = model.properties();
+  const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
+  const bool in_water = model.fluidDensity() > 0.0;
+  if (points_ == 0) {
+    points_ = model.drag().points();
+    gaussLegendreUnit(points_, nodes_, weights_);
+  }
+  const LinkBlocks& blocks = data.links;
+  for (int k = first; k < n; ++k) {
+    StiffLinkTerms& t = links_[k];
+    const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
+    t.axis = u;
+    // Joint k: bend across its mean axis, twist about it (the paper model's springs are not handled
+    // here: the simulator refuses them with this integrator).
+    if (bending) {
+      const Eigen::Vector3d prev = k > first ? blocks.get(&LinkBlock::u, k - 1) : data.clamp_axis;
+      const Eigen::Vector3d sum = prev + u;
+      const Eigen::Vector3d mean = sum.norm() > 1e-9 ? Eigen::Vector3d(sum.normalized()) : u;
+      t.joint_stiffness = jointBlock(p.stiffness_elevation(k), p.stiffness_torsion(k), mean);
+      t.joint_damping = jointBlock(p.damping_elevation(k), p.damping_torsion(k), mean);
+    }
+    // Drag: per length f = c_n |v_n| v_n + c_t |v_t| v_t with v = current - velocity, whose derivative
+    // with respect to the structure's velocity is -C, C = c_n (|v_n| P + v_n v_n^T / |v_n|) + 2 c_t |v.u| u u^T.
+    // A point at s moves at v_base + s omega x u = v_base - s [u]x omega: with C0, C1, C2 the integrals of
+    // C, s C, s^2 C, the damping is [[-[u]x C2 [u]x, [u]x C1], [-C1 [u]x, C0]] over (omega, v_base).
+    if (in_water) {
+      const LinkConstants& c = model.of(k);
+      const int i = LinkBlocks::lane(k);
+      const double l = c.length[i], cn = c.drag_normal[i], ct = c.drag_tangential[i];
+      const Eigen::Vector3d base = blocks.get(&LinkBlock::base_pos, k), v0 = blocks.get(&LinkBlock::base_vel, k);
+      const Eigen::Vector3d rate = blocks.get(&LinkBlock::axis_rate, k);
+      const Eigen::Matrix3d uu = u * u.transpose(), P = Eigen::Matrix3d::Identity() - uu;
+      Eigen::Matrix3d c0 = Eigen::Matrix3d::Zero(), c1 = Eigen::Matrix3d::Zero(), c2 = Eigen::Matrix3d::Zero();
+      for (int q = 0; q < points_; ++q) {
+        const double s = nodes_[q] * l, w = weights_[q] * l;
+        const Eigen::Vector3d relative = data.current.at(base.z() + s * u.z()) - v0 - s * rate;
+        const double along = relative.dot(u);
+        const Eigen::Vector3d normal = relative - along * u;
+        const double speed = normal.norm();
+        Eigen::Matrix3d jac = (cn * speed) * P + (2.0 * ct * std::abs(along)) * uu;
+        if (speed > 1e-12) jac += (cn / speed) * normal * normal.transpose();
+        c0 += w * jac;
+        c1 += (w * s) * jac;
+        c2 += (w * s * s) * jac;
+      }
+      const Eigen::Matrix3d ux = skew(u);
+      t.drag_rr = symmetrized(-ux * c2 * ux);
+      t.drag_rv = ux * c1;
+      t.drag_vv = c0;
+    }
+  }
+  // Geometric stiffness: the moment of everything outboard about link k's base end, u x G with
+  // G = l F_outboard + (the link's own first moment), turns with the link: dtau = -(G.u) P dtheta - ...;
+  // the symmetric, restoring part (G.u) P is kept, in tension only.
+  Eigen::Vector3d outboard = data.load_external;
+  for (int k = n - 1; k >= first; --k) {
+    StiffLinkTerms& t = links_[k];
+    const double l = model.get(&LinkConstants::length, k);
+    const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
+    const Eigen::Vector3d g = l * outboard + blocks.get(&LinkBlock::moment, k);
+    t.geometric = std::max(0.0, g.dot(u));
+    outboard += blocks.get(&LinkBlock::force, k);
+  }
+  // The load: its drag 1/2 rho C_d A |v| v has the damping 1/2 rho C_d A (|v| I + v v^T / |v|).
+  const LoadConstants& load = model.load();
+  load_drag_.setZero();
+  if (in_water && load.drag_area > 0.0) {
+    const Eigen::Vector3d relative = data.current.at(data.tip_position.z()) - data.tip_velocity;
+    const double speed = relative.norm(), k = 0.5 * model.fluidDensity() * load.drag_area;
+    load_drag_ = (k * speed) * Eigen::Matrix3d::Identity();
+    if (speed > 1e-12) load_drag_ += (k / speed) * relative * relative.transpose();
+  }
+  coupling_stiffness_ = ends.load_coupled ? load.coupling_stiffness : 0.0;
+  coupling_damping_ = ends.load_coupled ? load.coupling_damping : 0.0;
+}
+
+void StiffArticulatedBody::clearExtra() {
+  for (StiffLinkTerms& t : links_) {
+    t.extra_torque.setZero();
+    t.extra_force.setZero();
+  }
+  load_extra_.setZero();
+}
+
+void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+                                            const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
+                                            const Eigen::Matrix3Xd& translation,
+                                            const Eigen::Vector3d& tip_translation) {
+  const int n = model.links(), first = model.firstLink();
+  for (int k = first; k < n; ++k) {
+    StiffLinkTerms& t = links_[k];
+    const Eigen::Vector3d r = rotation.col(k);
+    const Eigen::Vector3d relative = r - (k > first ? Eigen::Vector3d(rotation.col(k - 1)) : base_rotation);
+    // Joint k: g(theta + dtheta) = g - K dtheta puts -K_j (dtheta_k - dtheta_{k-1}) on link k and the
+    // opposite on link k-1; "K r" is minus that.
+    const Eigen::Vector3d joint =
+        stiffness_factor * (t.joint_stiffness * relative) + damping_factor * (t.joint_damping * relative);
+    t.extra_torque += joint;
+    if (k > first) links_[k - 1].extra_torque -= joint;
+    // The link's geometric stiffness (on the rotation across it) and drag damping.
+    const Eigen::Vector3d v = translation.col(k);
+    t.extra_torque += damping_factor * (t.drag_rr * r + t.drag_rv * v);
+    t.extra_force += damping_factor * (t.drag_rv.transpose() * r + t.drag_vv * v);
+    t.extra_torque += (stiffness_factor * t.geometric) * (r - r.dot(t.axis) * t.axis);  // (G.u) P r
+  }
+  load_extra_ += (stiffness_factor * coupling_stiffness_ + damping_factor * coupling_damping_) * tip_translation +
+                 damping_factor * (load_drag_ * tip_translation);
+}
+
+void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data, double damping_weight,
+                                 double stiffness_weight) {
+  const int n = model.links(), first = model.firstLink();
+  const LinkBlocks& blocks = data.links;
+  const LoadConstants& load = model.load();
+  const double cd = damping_weight, ck = stiffness_weight;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  // The load, a point at the tip: no rotational inertia, its mass plus the weighted drag and coupling.
+  Eigen::Matrix3d child_rr = Eigen::Matrix3d::Zero(), child_rv = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d child_vv = (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity + cd * load_drag_;
+  Eigen::Vector3d child_pr = Eigen::Vector3d::Zero();
+  Eigen::Vector3d child_pv = load.inertia * data.tip_known_acc - data.load_external - load_extra_;
+  for (int k = n - 1; k >= first; --k) {
+    StiffLinkTerms& t = links_[k];
+    const LinkConstants& c = model.of(k);
+    const LinkBlock& block = blocks.of(k);
+    const int i = LinkBlocks::lane(k);
+    const double l = c.length[i];
+    const Eigen::Vector3d u = toEigen(block.u[i]);
+    // The outboard part's inertia and bias moved from the far end to the base end: with R = l [u]x,
+    // rr' = rr - rv R + R rv^T - R vv R (R rv^T = -(rv R)^T), rv' = rv + R vv, torque' = torque + R force.
+    const Eigen::Matrix3d R = l * skew(u);
+    const Eigen::Matrix3d r_vv = R * child_vv;
+    const Eigen::Matrix3d rv_r = child_rv * R;
+    Eigen::Matrix3d a_rr = child_rr - rv_r - rv_r.transpose() - r_vv * R;
+    Eigen::Matrix3d a_rv = child_rv + r_vv;
+    Eigen::Matrix3d a_vv = child_vv;
+    Eigen::Vector3d a_pr = child_pr + R * child_pv;
+    Eigen::Vector3d a_pv = child_pv;
+    // The link's own spatial inertia about its base end: rotation (c1 P + I_P u u^T), coupling h [u]x,
+    // translation l A; plus the drag's damping and the geometric stiffness, weighted.
+    const Eigen::Matrix3d uu = u * u.transpose(), P = identity - uu;
+    const double la = l * c.added[i];
+    a_rr += (c.own_transverse[i] + ck * t.geometric) * P + c.polar[i] * uu + cd * t.drag_rr;
+    a_rv += c.half_moment[i] * skew(u) + cd * t.drag_rv;
+    a_vv += c.translational[i] * identity - la * uu + cd * t.drag_vv;
+    // Its bias, as the ordinary recursion has it (articulated_body.cpp, linkTermsPass), less the extra
+    // right-hand side.
+    const Eigen::Vector3d known = toEigen(block.known_acc[i]), beta = toEigen(block.beta[i]);
+    const Eigen::Vector3d omega = toEigen(block.omega[i]), rate = toEigen(block.axis_rate[i]);
+    const Eigen::Vector3d mean = l * known + (0.5 * l * l) * beta;
+    const Eigen::Vector3d own_force = c.translational[i] * known + c.half_moment[i] * beta -
+                                      (c.added[i] * u.dot(mean)) * u - toEigen(block.force[i]);
+    const Eigen::Vector3d own_moment = c.half_moment[i] * known + c.third_moment[i] * beta - toEigen(block.moment[i]);
+    const double gyroscopic = c.polar[i] - c.thick_transverse[i];
+    a_pr += u.cross(own_moment) + (gyroscopic * u.dot(omega)) * rate - toEigen(block.torque[i]) - t.extra_torque;
+    a_pv += own_force - t.extra_force;
+    // Joint k: D = I^A_rr + Z.
+    const Eigen::Matrix3d joint = symmetrized(a_rr) + cd * t.joint_damping + ck * t.joint_stiffness;
+    const Eigen::Matrix3d inverse = joint.inverse();
+    t.forward_rot = inverse * a_rr;
+    t.forward_lin = inverse * a_rv;
+    t.nu_bias = inverse * a_pr;
+    if (k == first) {
+      // Force rows of the wrench at the base: J = rv^T nu + p_v (d = 0 at the base).
+      base_force_ = a_pv;  // completed after the forward pass
+      child_rv = a_rv;     // keep for the base force
+      child_pv = a_pv;
+      break;
+    }
+    child_rr = symmetrized(a_rr - a_rr * t.forward_rot);
+    child_rv = a_rv - a_rr * t.forward_lin;
+    child_vv = symmetrized(a_vv - a_rv.transpose() * t.forward_lin);
+    child_pr = a_pr - a_rr * t.nu_bias;
+    child_pv = a_pv - a_rv.transpose() * t.nu_bias;
+  }
+  // Forward: the base's clamp is at rest in this linearization (alpha = nu at the base link, d = 0).
+  Eigen::Vector3d alpha = Eigen::Vector3d::Zero(), d = Eigen::Vector3d::Zero();
+  for (int k = first; k < n; ++k) {
+    StiffLinkTerms& t = links_[k];
+    const Eigen::Vector3d nu = -(t.forward_rot * alpha + t.forward_lin * d) - t.nu_bias;
+    alpha += nu;
+    t.angular_acc = alpha;
+    t.delta_acc = d;
+    if (k == first) base_force_ = child_rv.transpose() * nu + child_pv;
+    const double l = model.get(&LinkConstants::length, k);
+    d -= l * blocks.get(&LinkBlock::u, k).cross(alpha);  // d_{k+1} = d_k + l alpha x u
+  }
+  tip_delta_ = d;
+}
+
+}  // namespace cable_dynamics
