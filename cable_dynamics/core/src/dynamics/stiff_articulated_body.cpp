@@ -45,7 +45,8 @@ inline Eigen::Matrix3d jointBlock(double across, double about, const Eigen::Vect
 
 StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links) {}
 
-void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends) {
+void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends,
+                                     bool use_last_tension) {
   const int n = model.links(), first = model.firstLink();
   const LinkProperties& p = model.properties();
   const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
@@ -100,9 +101,16 @@ void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& d
   }
   // Geometric stiffness: the moment of everything outboard about link k's base end, u x G with
   // G = l F_outboard + (the link's own first moment), turns with the link: dtau = -(G.u) P dtheta - ...;
-  // the symmetric, restoring part (G.u) P is kept, in tension only.
+  // the symmetric, restoring part (G.u) P is kept, in tension only. With the joint forces of a solve,
+  // G.u = l (T_k + T_{k+1}) / 2, the mean tension along the link times its length.
+  if (use_last_tension) {
+    for (int k = first; k < n; ++k) {
+      const double far = k + 1 < n ? links_[k + 1].tension : tip_tension_;
+      links_[k].geometric = std::max(0.0, 0.5 * model.get(&LinkConstants::length, k) * (links_[k].tension + far));
+    }
+  }
   Eigen::Vector3d outboard = data.load_external;
-  for (int k = n - 1; k >= first; --k) {
+  for (int k = n - 1; k >= first && !use_last_tension; --k) {
     StiffLinkTerms& t = links_[k];
     const double l = model.get(&LinkConstants::length, k);
     const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
@@ -189,9 +197,12 @@ void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data,
     // translation l A; plus the drag's damping and the geometric stiffness, weighted.
     const Eigen::Matrix3d uu = u * u.transpose(), P = identity - uu;
     const double la = l * c.added[i];
+    const Eigen::Matrix3d own_rv = c.half_moment[i] * skew(u) + cd * t.drag_rv;
+    t.own_vr = own_rv.transpose();
+    t.own_vv = c.translational[i] * identity - la * uu + cd * t.drag_vv;
     a_rr += (c.own_transverse[i] + ck * t.geometric) * P + c.polar[i] * uu + cd * t.drag_rr;
-    a_rv += c.half_moment[i] * skew(u) + cd * t.drag_rv;
-    a_vv += c.translational[i] * identity - la * uu + cd * t.drag_vv;
+    a_rv += own_rv;
+    a_vv += t.own_vv;
     // Its bias, as the ordinary recursion has it (articulated_body.cpp, linkTermsPass), less the extra
     // right-hand side.
     const Eigen::Vector3d known = toEigen(block.known_acc[i]), beta = toEigen(block.beta[i]);
@@ -202,7 +213,8 @@ void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data,
     const Eigen::Vector3d own_moment = c.half_moment[i] * known + c.third_moment[i] * beta - toEigen(block.moment[i]);
     const double gyroscopic = c.polar[i] - c.thick_transverse[i];
     a_pr += u.cross(own_moment) + (gyroscopic * u.dot(omega)) * rate - toEigen(block.torque[i]) - t.extra_torque;
-    a_pv += own_force - t.extra_force;
+    t.own_bias = own_force - t.extra_force;
+    a_pv += t.own_bias;
     // Joint k: D = I^A_rr + Z.
     const Eigen::Matrix3d joint = symmetrized(a_rr) + cd * t.joint_damping + ck * t.joint_stiffness;
     const Eigen::Matrix3d inverse = joint.inverse();
@@ -235,6 +247,17 @@ void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data,
     d -= l * blocks.get(&LinkBlock::u, k).cross(alpha);  // d_{k+1} = d_k + l alpha x u
   }
   tip_delta_ = d;
+  // Joint forces from the tip inwards, J_k = J_{k+1} + (the link's inertia force less its loads), for
+  // the tensions the next linearization's geometric stiffness reads.
+  const Eigen::Matrix3d load_mass =
+      (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity + cd * load_drag_;
+  Eigen::Vector3d joint = load_mass * d + load.inertia * data.tip_known_acc - data.load_external - load_extra_;
+  tip_tension_ = -joint.dot(blocks.get(&LinkBlock::u, n - 1));
+  for (int k = n - 1; k >= first; --k) {
+    StiffLinkTerms& t = links_[k];
+    joint += t.own_vr * t.angular_acc + t.own_vv * t.delta_acc + t.own_bias;
+    t.tension = -joint.dot(blocks.get(&LinkBlock::u, k));
+  }
 }
 
 }  // namespace cable_dynamics

@@ -48,6 +48,10 @@ struct StiffLinkTerms {
   // Forward pass.
   Eigen::Vector3d angular_acc = Eigen::Vector3d::Zero();  ///< omega' [rad/s^2]
   Eigen::Vector3d delta_acc = Eigen::Vector3d::Zero();    ///< d_k: base-end acceleration less the known one [m/s^2]
+  // The link's own force rows, kept for the joint forces: force = own_vr alpha + own_vv d + own_bias.
+  Eigen::Matrix3d own_vr = Eigen::Matrix3d::Zero(), own_vv = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d own_bias = Eigen::Vector3d::Zero();  ///< [N]
+  double tension = 0.0;  ///< at the base end, -J_k . u_k, from the last solve() [N]
 };
 
 /// Terms and solver of the implicit step for one chain. Call linearize() after ChainDynamics::computeLoads(),
@@ -56,8 +60,11 @@ class StiffArticulatedBody {
  public:
   explicit StiffArticulatedBody(int links);
 
-  /// Joint, drag, geometric and load Jacobians at the state whose loads `data` holds. O(n).
-  void linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends);
+  /// Joint, drag, geometric and load Jacobians at the state whose loads `data` holds. O(n). The geometric
+  /// stiffness reads the tensions of the last solve() (inertial forces included: a whipping cable's
+  /// tension is mostly centripetal) when `use_last_tension`, else the tension the external loads alone
+  /// would hold statically.
+  void linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends, bool use_last_tension = false);
 
   /// Sets the extra right-hand side to zero.
   void clearExtra();
@@ -86,6 +93,7 @@ class StiffArticulatedBody {
   double coupling_stiffness_ = 0.0, coupling_damping_ = 0.0;  ///< of the PD coupling, when coupled
   Eigen::Vector3d load_extra_ = Eigen::Vector3d::Zero();  ///< extra force on the load [N]
   Eigen::Vector3d tip_delta_ = Eigen::Vector3d::Zero(), base_force_ = Eigen::Vector3d::Zero();
+  double tip_tension_ = 0.0;  ///< the load's pull along the last link [N]
   int points_ = 0;
   double nodes_[8] = {}, weights_[8] = {};
 };

@@ -48,7 +48,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   // Predictor: backward Euler over theta h from x_n, linearized: (M + th D + th^2 K) a_p = g(x_n) - th K w_n.
   const EndInputs start = end_conditions.at(t);
   f.computeLoads(x, start);
-  solver_.linearize(model, data, start);
+  solver_.linearize(model, data, start, tensions_known_);
   solver_.clearExtra();
   for (int k = first; k < n; ++k) omega_.col(k) = x.segment<3>(StateLayout::omega(k));
   translation_.setZero();  // K reads rotations only
@@ -73,7 +73,8 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   // Corrector about x_p: (M + th D + th^2 K) a = g(x_p) + (D + th K) dw_p, dw = h a.
   const EndInputs middle = end_conditions.at(t + th);
   f.computeLoads(predicted_, middle);
-  solver_.linearize(model, data, middle);
+  solver_.linearize(model, data, middle, true);  // the predictor's tensions
+  tensions_known_ = true;
   solver_.clearExtra();
   solver_.addJacobianTimes(model, th, 1.0, rotation_, Eigen::Vector3d::Zero(), translation_, tip_change);
   solver_.solve(model, data, th, th * th);

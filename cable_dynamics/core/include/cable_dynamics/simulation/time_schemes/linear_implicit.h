@@ -34,9 +34,13 @@ class LinearImplicitScheme : public TimeScheme {
   bool balancesEnergy() const override { return false; }
 
   double theta() const { return theta_; }
+  /// The geometric stiffness of the next predictor comes from the external loads again, not from the
+  /// tensions of the last step (a reset or a changed input).
+  void forget() override { tensions_known_ = false; }
 
  private:
   double theta_;
+  bool tensions_known_ = false;  ///< the solver holds the tensions of the previous step's corrector
   StiffArticulatedBody solver_;
   Eigen::VectorXd predicted_;                          ///< x_p (state size)
   Eigen::Matrix3Xd omega_, rotation_, translation_;    ///< (3 x n) scratch [rad/s], [rad/s], [m/s]
