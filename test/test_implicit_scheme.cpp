@@ -55,7 +55,7 @@ TEST(ImplicitScheme, SingleModeAmplificationIsTheThetaMethods) {
   // recurrence x_{k+1} = p x_k - q x_{k-1} of the step's eigenvalues r, conj(r): p = 2 Re r, q = |r|^2.
   std::cout << "rho_inf  w h    |r| measured   |r| theta method   arg r / (w h) measured   theta method   "
                "amplitude per period\n";
-  for (double rho : {1.0, 0.5, 0.0}) {
+  for (double rho : {1.0, 0.98, 0.9, 0.5, 0.0}) {
     for (double wh : {0.1, 1.0, 10.0}) {
       CableParams p = loadConfigString(
           "cable: {links: 1, length: 1.0, diameter: 0.02, mass_per_length: 1.0,"
