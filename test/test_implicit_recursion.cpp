@@ -2,6 +2,7 @@
 // - with zero weights and no extra right-hand side it is the ordinary equations of motion: the same
 //   angular accelerations as ChainDynamics::derivative (the O(n) recursion of articulated_body.cpp, itself
 //   held against the paper model and sympy);
+// - its drag damping is the drag's velocity Jacobian: central differences of the external-load pass;
 // - with weights it solves (M + c_D D + c_K K) a = rhs + c_K K r + D r, which this test assembles densely
 //   from the dense formulation's mass matrix and generalized forces (dense_solver.cpp) and the Jacobian
 //   blocks mapped through the links' velocity Jacobians, and solves by LU.
@@ -165,4 +166,52 @@ TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
       EXPECT_LT((solver.tipDelta() - base[n] * dense).norm(), 1e-9 * (base[n] * dense).norm() + 1e-12);
     }
   }
+}
+
+TEST(ImplicitRecursion, DragDampingIsTheDragsVelocityJacobian) {
+  // Link k's drag (external_loads.cpp: the Gauss quadrature of the Morison force) as the state's angular
+  // velocities change: omega_k moves link k's axis rate (columns omega of the damping), omega_{k-1} its base
+  // end's velocity by l_{k-1} domega x u_{k-1} (columns v_base). Uniform current: the Jacobian's
+  // mid-link current is then exact.
+  const int n = 6, k = 3;
+  const CableParams p = stiffCable(n, false, true);
+  ChainDynamics f(p);
+  Eigen::VectorXd q, qd, x(f.stateSize());
+  randomState(n, 5, q, qd);
+  f.stateFromPaper(q, qd, x);
+  const EndInputs ends;
+  StiffArticulatedBody solver(n);
+  f.computeLoads(x, ends);
+  solver.linearize(f.model(), f.data(), ends);
+  const StiffLinkTerms& t = solver.link(k);
+  const Eigen::Vector3d u = f.data().links.get(&LinkBlock::u, k), prev = f.data().links.get(&LinkBlock::u, k - 1);
+  const double l_prev = f.model().get(&LinkConstants::length, k - 1), eps = 1e-6;
+  // The wrench on link k about its base end: torque u x moment, force.
+  const auto wrench = [&](const Eigen::VectorXd& state) {
+    f.computeLoads(state, ends);
+    Eigen::Matrix<double, 6, 1> out;
+    out << u.cross(f.data().links.get(&LinkBlock::moment, k)), f.data().links.get(&LinkBlock::force, k);
+    return out;
+  };
+  double scale = 0.0, error = 0.0;
+  for (int j = 0; j < 3; ++j) {
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(j);
+    for (int which : {k, k - 1}) {
+      Eigen::VectorXd plus = x, minus = x;
+      plus.segment<3>(StateLayout::omega(which)) += eps * e;
+      minus.segment<3>(StateLayout::omega(which)) -= eps * e;
+      const Eigen::Matrix<double, 6, 1> numeric = (wrench(plus) - wrench(minus)) / (2.0 * eps);
+      Eigen::Matrix<double, 6, 1> predicted;
+      if (which == k) {  // -(damping) (e, 0)
+        predicted << -(t.drag_rr * e), -(t.drag_rv.transpose() * e);
+      } else {  // -(damping) (0, dv), dv = l_{k-1} e x u_{k-1}
+        const Eigen::Vector3d dv = l_prev * e.cross(prev);
+        predicted << -(t.drag_rv * dv), -(t.drag_vv * dv);
+      }
+      scale = std::max(scale, numeric.norm());
+      error = std::max(error, (numeric - predicted).norm());
+    }
+  }
+  EXPECT_GT(scale, 1e-3);
+  EXPECT_LT(error, 1e-6 * scale);  // central differences: round-off and eps^2 terms
 }

@@ -14,6 +14,9 @@
 /// bias p^A; with D = I^A_rr + Z, the joint's motion nu = -D^-1 (U^T X a_parent + p^A_r) (U: I^A's
 /// rotation columns), and the parent sees I^a = I^A - U D^-1 U^T, p^a = p^A - U D^-1 p^A_r. Forward
 /// (base to tip): alpha_k = alpha_{k-1} + nu_k, d_k from the parent's far end.
+///
+/// With the loads' passes, this is the implicit step's hot path (twice a step): no heap allocation, and
+/// measure any change with bench/ (stiff_step).
 #include "cable_dynamics/dynamics/stiff_articulated_body.h"
 
 #include <algorithm>
@@ -23,6 +26,7 @@
 #include <Eigen/LU>
 
 #include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/hot_path.h"
 
 namespace cable_dynamics {
 namespace {
@@ -45,7 +49,7 @@ inline Eigen::Matrix3d jointBlock(double across, double about, const Eigen::Vect
 
 StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links) {}
 
-void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends,
+CABLE_HOT_PATH void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends,
                                      bool use_last_tension) {
   const int n = model.links(), first = model.firstLink();
   const LinkProperties& p = model.properties();
@@ -73,30 +77,46 @@ void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& d
     // with respect to the structure's velocity is -C, C = c_n (|v_n| P + v_n v_n^T / |v_n|) + 2 c_t |v.u| u u^T.
     // A point at s moves at v_base + s omega x u = v_base - s [u]x omega: with C0, C1, C2 the integrals of
     // C, s C, s^2 C, the damping is [[-[u]x C2 [u]x, [u]x C1], [-C1 [u]x, C0]] over (omega, v_base).
+    // The current is taken at the link's middle (a Jacobian: an approximation costs no order). Then
+    // v.u = along is the same all along the link and v_n(s) = n0 - s u' (u' normal to u), so each C_m is
+    // A_m P + b W_m u u^T + G_m n0 n0^T - G_{m+1} (n0 u'^T + u' n0^T) + G_{m+2} u' u'^T with the
+    // quadrature's sums W_m of w s^m, A_m of w s^m c_n |v_n|, G_m of w s^m c_n / |v_n|, b = 2 c_t |along|.
     if (in_water) {
       const LinkConstants& c = model.of(k);
       const int i = LinkBlocks::lane(k);
       const double l = c.length[i], cn = c.drag_normal[i], ct = c.drag_tangential[i];
       const Eigen::Vector3d base = blocks.get(&LinkBlock::base_pos, k), v0 = blocks.get(&LinkBlock::base_vel, k);
       const Eigen::Vector3d rate = blocks.get(&LinkBlock::axis_rate, k);
-      const Eigen::Matrix3d uu = u * u.transpose(), P = Eigen::Matrix3d::Identity() - uu;
-      Eigen::Matrix3d c0 = Eigen::Matrix3d::Zero(), c1 = Eigen::Matrix3d::Zero(), c2 = Eigen::Matrix3d::Zero();
+      const Eigen::Vector3d relative = data.current.at(base.z() + 0.5 * l * u.z()) - v0;
+      const double along = relative.dot(u);
+      const Eigen::Vector3d n0 = relative - along * u;
+      double w[3] = {0.0, 0.0, 0.0}, a[3] = {0.0, 0.0, 0.0}, g[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
       for (int q = 0; q < points_; ++q) {
-        const double s = nodes_[q] * l, w = weights_[q] * l;
-        const Eigen::Vector3d relative = data.current.at(base.z() + s * u.z()) - v0 - s * rate;
-        const double along = relative.dot(u);
-        const Eigen::Vector3d normal = relative - along * u;
-        const double speed = normal.norm();
-        Eigen::Matrix3d jac = (cn * speed) * P + (2.0 * ct * std::abs(along)) * uu;
-        if (speed > 1e-12) jac += (cn / speed) * normal * normal.transpose();
-        c0 += w * jac;
-        c1 += (w * s) * jac;
-        c2 += (w * s * s) * jac;
+        const double s = nodes_[q] * l, weight = weights_[q] * l;
+        const double speed = (n0 - s * rate).norm();
+        const double inverse = speed > 1e-12 ? cn / speed : 0.0;
+        double power = weight;  // w s^m
+        for (int m = 0; m < 5; ++m) {
+          if (m < 3) {
+            w[m] += power;
+            a[m] += power * cn * speed;
+          }
+          g[m] += power * inverse;
+          power *= s;
+        }
       }
-      const Eigen::Matrix3d ux = skew(u);
-      t.drag_rr = symmetrized(-ux * c2 * ux);
-      t.drag_rv = ux * c1;
-      t.drag_vv = c0;
+      const double b = 2.0 * ct * std::abs(along);
+      const Eigen::Matrix3d uu = u * u.transpose(), P = Eigen::Matrix3d::Identity() - uu;
+      const Eigen::Matrix3d nn = n0 * n0.transpose(), nr = n0 * rate.transpose(), rr = rate * rate.transpose();
+      // C0 (force per base velocity).
+      t.drag_vv = a[0] * P + (b * w[0]) * uu + g[0] * nn - g[1] * (nr + nr.transpose()) + g[2] * rr;
+      // [u]x C1: [u]x u = 0, [u]x P = [u]x.
+      const Eigen::Vector3d un = u.cross(n0), ur = u.cross(rate);
+      t.drag_rv = a[1] * skew(u) + g[1] * un * n0.transpose() - g[2] * (un * rate.transpose() + ur * n0.transpose()) +
+                  g[3] * ur * rate.transpose();
+      // [u]x^T C2 [u]x: [u]x^T P [u]x = P, [u]x^T u u^T [u]x = 0, and (u x n)(u x n)^T for n n^T.
+      const Eigen::Matrix3d unur = un * ur.transpose();
+      t.drag_rr = a[2] * P + g[2] * un * un.transpose() - g[3] * (unur + unur.transpose()) + g[4] * ur * ur.transpose();
     }
   }
   // Geometric stiffness: the moment of everything outboard about link k's base end, u x G with
@@ -139,7 +159,7 @@ void StiffArticulatedBody::clearExtra() {
   load_extra_.setZero();
 }
 
-void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
                                             const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
                                             const Eigen::Matrix3Xd& translation,
                                             const Eigen::Vector3d& tip_translation) {
@@ -164,7 +184,7 @@ void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, double stif
                  damping_factor * (load_drag_ * tip_translation);
 }
 
-void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data, double damping_weight,
+CABLE_HOT_PATH void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data, double damping_weight,
                                  double stiffness_weight) {
   const int n = model.links(), first = model.firstLink();
   const LinkBlocks& blocks = data.links;

@@ -103,7 +103,8 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     const Eigen::Vector3d evaluated = omega + theta_ * change;  // w at the evaluation point
     const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k));
     x.segment<3>(StateLayout::axis(k)) = turned(axis, h * evaluated);
-    x(StateLayout::twist(k)) += h * twistRate(evaluated, turned(axis, th * evaluated));
+    // sigma' at the evaluation point, with x_p's axis (O(h^2) from it: second order still).
+    x(StateLayout::twist(k)) += h * twistRate(evaluated, predicted_.segment<3>(StateLayout::axis(k)));
     x.segment<3>(StateLayout::omega(k)) = omega + change;
   }
   x(StateLayout::dissipated(n)) -= h * (data.drag_power + added_power + damping_power);
