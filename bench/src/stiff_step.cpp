@@ -5,7 +5,7 @@
 // - the dense semi-implicit integrator at 10 ms (n <= 300: at 1000 its 3000 x 3000 LU is tens of seconds a step),
 // - the implicit integrator and DART 6 with joint springs and dampers on the same chain at the same step,
 //   in air with a free load (DART has no fluid and no coupling): the like-for-like pair.
-// Every system starts from the preset's static equilibrium, the same state. Usage: stiff_step [sizes] [seconds]
+// Every system starts from the preset's static equilibrium, the same state (the DART pair: see below). Usage: stiff_step [sizes] [seconds]
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -39,19 +39,14 @@ double secondsPerSimulatedSecond(Step step, double dt, double budget) {
   return elapsed / (steps * dt);
 }
 
-/// A simulator of `params` started from the paper state (q, qd): no second static solve.
+/// A simulator of `params` from its configured start (the presets: the static equilibrium, solved again
+/// for each system: the ROV's target is set relative to that start, so a state copied in through the
+/// paper angles would put the target tens of metres from the tip).
 struct Started {
   CableSimulator sim;
   bool ok = true;
   long retried = 0;
-  /// Empty q: the configured initial angles.
-  Started(CableParams params, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) : sim(withAngles(params)) {
-    if (q.size() > 0) sim.setPaperState(q, qd);
-  }
-  static CableParams withAngles(CableParams p) {
-    p.initial.mode = cable_dynamics::InitialMode::kAngles;
-    return p;
-  }
+  explicit Started(const CableParams& params) : sim(params) {}
   double time(double budget) {
     return secondsPerSimulatedSecond(
         [this] {
@@ -83,9 +78,7 @@ int main(int argc, char** argv) {
     for (const int n : sizes) {
       const CableParams params =
           cable_dynamics::loadConfigFile(std::string(BENCH_CONFIG_DIR) + "/" + preset + ".yaml", {"cable.links=" + std::to_string(n)});
-      CableSimulator start(params);  // solves the static equilibrium
-      Eigen::VectorXd q(3 * n), qd(3 * n);
-      start.paperCoordinates(q, qd);
+      CableSimulator start(params);  // for its link properties
       const cable_dynamics::StableStep stable = cable_dynamics::estimateStableStep(params, start.properties());
       std::printf("%6d", n);
       std::fflush(stdout);
@@ -95,7 +88,7 @@ int main(int argc, char** argv) {
       rk4.simulation.integrator = cable_dynamics::Integrator::kRk4;
       rk4.simulation.dt = stable.recommended;
       for (int halvings = 0; halvings < 6; ++halvings) {
-        Started trial(rk4, q, qd);
+        Started trial(rk4);
         bool clean = true;
         for (long i = 0; i * rk4.simulation.dt < 0.2 && clean; ++i) {
           const cable_dynamics::StepReport r = trial.sim.step();
@@ -105,7 +98,7 @@ int main(int argc, char** argv) {
         rk4.simulation.dt *= 0.5;
       }
       {
-        Started s(rk4, q, qd);
+        Started s(rk4);
         const double t = s.time(budget);
         char cell[64];
         std::snprintf(cell, sizeof cell, "(dt %.2g%s)%s", rk4.simulation.dt, rk4.simulation.dt < stable.recommended ? "*" : "",
@@ -116,7 +109,7 @@ int main(int argc, char** argv) {
       CableParams implicit = params;
       implicit.simulation.dt = stable.implicit_recommended;
       {
-        Started s(implicit, q, qd);
+        Started s(implicit);
         const double t = s.time(budget);
         printCell(t, s.flag());
         if (n == 100) implicit_100 = t;
@@ -127,7 +120,7 @@ int main(int argc, char** argv) {
         CableParams semi = params;
         semi.simulation.integrator = cable_dynamics::Integrator::kSemiImplicit;
         semi.simulation.dt = 0.01;
-        Started s(semi, q, qd);
+        Started s(semi);
         printCell(s.time(budget), s.flag());
       } else {
         std::printf(" %-25s", "(not run: O(n^3))");
@@ -142,7 +135,7 @@ int main(int argc, char** argv) {
       air.initial.mode = cable_dynamics::InitialMode::kAngles;
       for (double& e : air.initial.elevation) e = 0.05;
       for (double& a : air.initial.azimuth) a = 0.0;
-      Started project(air, Eigen::VectorXd::Zero(0), Eigen::VectorXd::Zero(0));
+      Started project(air);
       std::vector<Eigen::Vector3d> axes;  // DART's start: the same shape at rest
       for (int k = 0; k < n; ++k) axes.push_back(project.sim.state().segment<3>(cable_dynamics::StateLayout::axis(k)));
       const double project_time = project.time(budget);
