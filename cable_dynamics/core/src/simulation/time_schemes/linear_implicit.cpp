@@ -48,7 +48,9 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   // Predictor: backward Euler over theta h from x_n, linearized: (M + th D + th^2 K) a_p = g(x_n) - th K w_n.
   const EndInputs start = end_conditions.at(t);
   f.computeLoads(x, start);
-  solver_.linearize(model, data, start, tensions_known_);
+  // The predictor only has to be consistent (x_p is then O(h^2) from the evaluation point whatever its
+  // Jacobian): it reuses the last corrector's, linearized O(h) away, and saves a linearization a step.
+  if (!tensions_known_) solver_.linearize(model, data, start, false);
   solver_.clearExtra();
   for (int k = first; k < n; ++k) omega_.col(k) = x.segment<3>(StateLayout::omega(k));
   translation_.setZero();  // K reads rotations only

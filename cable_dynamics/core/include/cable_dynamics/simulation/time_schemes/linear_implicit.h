@@ -14,7 +14,8 @@ namespace cable_dynamics {
 /// The theta method y_{n+1} = y_n + h f(y_n + theta (y_{n+1} - y_n)) on the angular velocities w and
 /// the rotations, linearized in two stages that both solve (M + theta h D + theta^2 h^2 K) a = rhs by one
 /// O(n) recursion (K, D: the Jacobians of stiff_articulated_body.h):
-/// - predictor, a linearized backward-Euler step of theta h from x_n: a_p from rhs = g(x_n) - theta h K w_n,
+/// - predictor, a linearized backward-Euler step of theta h from x_n (with the previous corrector's K and D):
+///   a_p from rhs = g(x_n) - theta h K w_n,
 ///   dw_p = theta h a_p, w_p = w_n + dw_p, axes turned by theta h w_p: x_p, an O(h^2) estimate of the
 ///   state at the evaluation point;
 /// - corrector, the theta step linearized about x_p: rhs = g(x_p) + (D + theta h K) dw_p, dw = h a,
@@ -34,13 +35,13 @@ class LinearImplicitScheme : public TimeScheme {
   bool balancesEnergy() const override { return false; }
 
   double theta() const { return theta_; }
-  /// The geometric stiffness of the next predictor comes from the external loads again, not from the
-  /// tensions of the last step (a reset or a changed input).
+  /// The next predictor linearizes afresh (its geometric stiffness from the external loads) instead of
+  /// reusing the last corrector's Jacobians (a reset or a changed input).
   void forget() override { tensions_known_ = false; }
 
  private:
   double theta_;
-  bool tensions_known_ = false;  ///< the solver holds the tensions of the previous step's corrector
+  bool tensions_known_ = false;  ///< the solver holds the previous step's corrector's Jacobians and tensions
   StiffArticulatedBody solver_;
   Eigen::VectorXd predicted_;                          ///< x_p (state size)
   Eigen::Matrix3Xd omega_, rotation_, translation_;    ///< (3 x n) scratch [rad/s], [rad/s], [m/s]
