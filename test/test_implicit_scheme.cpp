@@ -276,7 +276,7 @@ TEST(ImplicitScheme, SteadyShapeAndTensionInACurrentMatchStaticsAndRk4) {
 
 TEST(ImplicitScheme, EnergyOverSixtySecondsWithoutDampers) {
   // In air, no dampers: kinetic + potential + elastic is constant in the model. The tether starts straight,
-  // tilted by 0.3 rad from its clamp (the clamp's spring loaded: about 33 J to swing and vibrate with), for
+  // tilted by 0.3 rad from its clamp (the clamp's spring loaded: about 35 J to swing and vibrate with), for
   // 60 s. rho_inf = 1 (no numerical damping) holds the energy at 1 ms; at 2.5 ms and 10 ms this undamped
   // run grows unstable after 44 s and 57 s (docs/MODEL.md: the bending Jacobian is approximate, and with no
   // damping at all nothing takes out what that error puts in). rho_inf = 0.98 damps the highest modes and
@@ -307,6 +307,27 @@ TEST(ImplicitScheme, EnergyOverSixtySecondsWithoutDampers) {
               << drift / scale << " of the energy scale " << scale << " J; E(60 s) - E0 = " << end - start << " J\n";
     EXPECT_LT(drift / scale, c.bound);
     if (c.rho < 1.0) EXPECT_LT(end, start);  // numerical damping takes energy out, never puts it in
+  }
+}
+
+TEST(ImplicitScheme, RefusesWhatItsRecursionDoesNotHold) {
+  // The paper model's elevation spring and damper (absolute angles, not in the recursion): refused by name.
+  const std::string base = "cable: {links: 3, length: 3.0, diameter: 0.02, mass_per_length: 1.0}\n";
+  for (const char* key : {"cable.stiffness.elevation", "cable.damping.elevation"}) {
+    try {
+      CableSimulator sim(loadConfigString(base, {std::string(key) + "=1.0", "simulation.integrator=implicit"}));
+      ADD_FAILURE() << key << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("implicit"), std::string::npos) << e.what();
+    }
+  }
+  // A winch: the configuration names the integrator.
+  try {
+    loadConfigString(base, {"simulation.integrator=implicit", "winch={max_length: 10.0, max_speed: 1.0}"});
+    ADD_FAILURE() << "winch accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("simulation.integrator"), std::string::npos) << e.what();
   }
 }
 
