@@ -306,7 +306,9 @@ TEST(ImplicitScheme, EnergyOverSixtySecondsWithoutDampers) {
     std::cout << "rho_inf " << c.rho << ", dt " << c.dt << " s: largest |E - E0| over 60 s " << drift << " J = "
               << drift / scale << " of the energy scale " << scale << " J; E(60 s) - E0 = " << end - start << " J\n";
     EXPECT_LT(drift / scale, c.bound);
-    if (c.rho < 1.0) EXPECT_LT(end, start);  // numerical damping takes energy out, never puts it in
+    if (c.rho < 1.0) {
+      EXPECT_LT(end, start);  // numerical damping takes energy out, never puts it in
+    }
   }
 }
 
