@@ -32,6 +32,7 @@ status=${PIPESTATUS[0]}
 ./fluid_step_baseline 100,1000 | tee -a "$BUILD_DIR/results.txt"  # the same without the AVX2/FMA copies
 ./winch_step | tee -a "$BUILD_DIR/results.txt"  # what the winch adds to a step
 ./seabed_step | tee -a "$BUILD_DIR/results.txt"  # what the seabed adds to a step
+./stiff_step | tee -a "$BUILD_DIR/results.txt"  # issue 15: the stiff presets, RK4 / implicit / DART springs
 set -e
 echo "[bench] bench/run.sh total wall time: $(($(date +%s) - start)) s (packages, build and benchmark)"
 exit "$status"

@@ -159,6 +159,10 @@ TEST(ConfigLoader, RejectsWrongTypes) {
   expectRejected("cable.stiffness.model=spring", "cable.stiffness.model");
   expectRejected("simulation.integrator=euler", "simulation.integrator");
   EXPECT_EQ(loadConfigString(kMinimal, {"simulation.integrator=semi_implicit"}).simulation.integrator, cable_dynamics::Integrator::kSemiImplicit);
+  EXPECT_EQ(loadConfigString(kMinimal, {"simulation.integrator=implicit"}).simulation.integrator, cable_dynamics::Integrator::kImplicit);
+  EXPECT_EQ(loadConfigString(kMinimal, {"simulation.rho_infinity=0.9"}).simulation.rho_infinity, 0.9);
+  expectRejected("simulation.rho_infinity=1.5", "simulation.rho_infinity");
+  expectRejected("simulation.rho_infinity=-0.1", "simulation.rho_infinity");
   expectRejected("simulation.dt=0", "simulation.dt");
   expectRejected("initial.azimuth=[0.1, 0.2]", "initial.azimuth");
   expectRejected("cable.stiffness=3", "cable.stiffness");

@@ -1,4 +1,4 @@
-// No heap allocation in a simulation step, for both formulations and both integrators: the core is
+// No heap allocation in a simulation step, for both formulations and every integrator: the core is
 // compiled with EIGEN_RUNTIME_NO_MALLOC (test/tests.cmake) and Eigen's allocator is switched off around
 // the calls, so any Eigen allocation inside aborts the test.
 #ifndef EIGEN_RUNTIME_NO_MALLOC
@@ -68,6 +68,16 @@ TEST(NoAllocation, BendingSpringsStep) {
 
 TEST(NoAllocation, SemiImplicitStep) {
   expectNoAllocation({"simulation.integrator=semi_implicit", "simulation.dt=0.01"});
+}
+
+TEST(NoAllocation, ImplicitStep) {
+  // The implicit integrator (issue 15): its recursion's per-link terms are sized in its constructor; with
+  // springs, dampers, drag in a uniform current and in a depth profile, and an attached load.
+  const std::string springs = "cable.stiffness={model: bending, bending_rigidity: 50.0, torsional_rigidity: 20.0}";
+  expectNoAllocation({"simulation.integrator=implicit", "simulation.dt=0.01", springs, "cable.damping={elevation: 0.5, torsion: 0.01}"});
+  expectNoAllocation({"simulation.integrator=implicit", "simulation.dt=0.01", "simulation.rho_infinity=0.5", springs,
+                      "fluid.current=[0, 0, 0]", "fluid.current_profile=[[0, 1.0, 0.2, 0.0], [20, 0.3, 0.0, 0.0]]",
+                      "load.mode=attached"});
 }
 
 TEST(NoAllocation, SectionsAndAttachments) {

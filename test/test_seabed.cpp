@@ -162,6 +162,12 @@ TEST(Seabed, ConfigIsValidatedNamingTheKey) {
   EXPECT_EQ(key("{grid: {origin: [0, 0], spacing: [1, 1], depth: [[1, 2], [3]]}}"), "seabed.grid.depth[1]");
   EXPECT_EQ(key("{grid: {origin: [0, 0], spacing: [1, 1], depth: [[1, 2], [3, '4']]}}"), "seabed.grid.depth[1][1]");
   EXPECT_EQ(key("{grid_file: /nonexistent/bathymetry.yaml}"), "seabed.grid_file");
+  try {
+    loadConfigString(cable + "seabed: {depth: 10}\nsimulation: {integrator: implicit}\n");
+    ADD_FAILURE() << "the implicit step with a seabed was accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "simulation.integrator");  // its contact is not in the implicit step yet
+  }
   // Defaults: half the diameter, and the stiffness that rests the cable at 1 % of it.
   const CableParams p = loadConfigString(cable + "seabed: {depth: 10}\n");
   EXPECT_DOUBLE_EQ(p.seabed.penetration, 0.01);

@@ -63,6 +63,14 @@ catkin_add_gtest(test_step_check test/test_step_check.cpp)
 target_link_libraries(test_step_check cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 target_compile_definitions(test_step_check PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
+# The implicit integrator (issue 15): its recursion against a dense solve, and the scheme against RK4,
+# closed forms and the statics.
+catkin_add_gtest(test_implicit_recursion test/test_implicit_recursion.cpp)
+target_link_libraries(test_implicit_recursion cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+catkin_add_gtest(test_implicit_scheme test/test_implicit_scheme.cpp)
+target_link_libraries(test_implicit_scheme cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_implicit_scheme PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
 # Multibody reference: MuJoCo from Debian (libmujoco-dev).
 # (Debian's mujocoConfig.cmake names /usr/include/libqhull_r, which the package does not install, so the
 # library and header are found directly.)

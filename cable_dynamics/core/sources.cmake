@@ -27,11 +27,13 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/dynamics/energies.cpp
   ${CABLE_CORE_DIR}/src/dynamics/articulated_body.cpp
   ${CABLE_CORE_DIR}/src/dynamics/dense_solver.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/stiff_articulated_body.cpp
   ${CABLE_CORE_DIR}/src/dynamics/chain_dynamics.cpp
   # simulation: time schemes, the winch, end conditions, the step check, the simulator, link frames
   ${CABLE_CORE_DIR}/src/simulation/time_schemes/time_scheme.cpp
   ${CABLE_CORE_DIR}/src/simulation/time_schemes/rk4.cpp
   ${CABLE_CORE_DIR}/src/simulation/time_schemes/semi_implicit.cpp
+  ${CABLE_CORE_DIR}/src/simulation/time_schemes/linear_implicit.cpp
   ${CABLE_CORE_DIR}/src/simulation/body_motion.cpp
   ${CABLE_CORE_DIR}/src/simulation/winch.cpp
   ${CABLE_CORE_DIR}/src/simulation/winch_links.cpp

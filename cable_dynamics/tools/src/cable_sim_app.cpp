@@ -152,8 +152,13 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   CableSimulator& sim = *simulator;
   const StableStep stable = estimateStableStep(params, sim.properties());
   err << "cable_sim: " << params.links << " links, " << integratorName(params.simulation.integrator) << ", dt = " << sim.dt()
-      << " s, estimated largest stable RK4 step " << stable.recommended << " s (" << stable.mode << ")"
-      << (sim.dt() > stable.recommended ? "  (dt is larger: expect substeps)" : "") << "\n";
+      << " s, estimated largest stable RK4 step " << stable.recommended << " s (" << stable.mode << ")";
+  if (params.simulation.integrator == Integrator::kImplicit) {
+    err << "; implicit: recommended dt " << stable.implicit_recommended << " s (" << stable.implicit_mode << ")"
+        << (sim.dt() > stable.implicit_recommended ? "  (dt is larger: less accurate, still stable)" : "") << "\n";
+  } else {
+    err << (sim.dt() > stable.recommended ? "  (dt is larger: expect substeps)" : "") << "\n";
+  }
 
   std::ofstream csv(o.output);
   if (!csv) {
@@ -230,7 +235,7 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   if (status == 0 && done > 0 && retried > kMaxRetriedFraction * done) {
     err << "cable_sim: " << retried << " of " << done << " steps (more than " << 100 * kMaxRetriedFraction
         << " %) needed substeps: the result is not reliable at dt = " << sim.dt() << " s; use dt <= "
-        << stable.recommended << " s or simulation.integrator: semi_implicit\n";
+        << stable.recommended << " s or simulation.integrator: implicit (dt " << stable.implicit_recommended << " s)\n";
     status = 5;
   }
   // The energy balance holds to RK4's error (presets: at most 4e-5 of the energy scale over a run, the

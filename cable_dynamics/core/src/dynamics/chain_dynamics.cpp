@@ -145,6 +145,13 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   return true;
 }
 
+void ChainDynamics::computeLoads(const Eigen::VectorXd& x, const EndInputs& ends) {
+  applyEnds(ends);
+  computeKinematics(model_, data_, x, ends);
+  computeExternalLoads(model_, data_, ends);
+  computeJointTorques(model_, data_, x);
+}
+
 double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude) {
   applyEnds(ends);
   computeKinematics(model_, data_, x, ends);

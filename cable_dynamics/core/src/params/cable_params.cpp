@@ -152,7 +152,15 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
 }
 
 const char* integratorName(Integrator integrator) {
-  return integrator == Integrator::kRk4 ? "rk4" : "semi_implicit";
+  switch (integrator) {
+    case Integrator::kRk4:
+      return "rk4";
+    case Integrator::kSemiImplicit:
+      return "semi_implicit";
+    case Integrator::kImplicit:
+      return "implicit";
+  }
+  return "rk4";
 }
 
 const char* formulationName(Formulation formulation) {

@@ -37,6 +37,14 @@ void rejectSingularPaperSprings(const CableParams& p) {
                                 ": expected 0 with simulation.integrator: semi_implicit unless "
                                 "cable.stiffness.model is bending (or use integrator: rk4)");
   }
+  // The implicit integrator folds the bending model's joint springs into its recursion; the paper's
+  // elevation spring and damper act on an absolute angle and are not among its Jacobians.
+  if (p.simulation.integrator == Integrator::kImplicit && (p.stiffness.elevation != 0.0 || p.damping.elevation != 0.0)) {
+    throw std::invalid_argument("cable.stiffness.elevation / cable.damping.elevation = " +
+                                std::to_string(p.stiffness.elevation) + " / " + std::to_string(p.damping.elevation) +
+                                ": expected 0 with simulation.integrator: implicit unless cable.stiffness.model "
+                                "is bending (or use integrator: rk4)");
+  }
 }
 
 }  // namespace
@@ -44,7 +52,7 @@ void rejectSingularPaperSprings(const CableParams& p) {
 CableSimulator::CableSimulator(const CableParams& params)
     : params_(params),
       dynamics_(params),
-      scheme_(makeTimeScheme(params.simulation.integrator, params.links)),
+      scheme_(makeTimeScheme(params.simulation.integrator, params.links, params.simulation.rho_infinity)),
       ends_(params.base, params.load, params.winch),
       limits_(stepLimits(*std::min_element(params.link_lengths.begin(), params.link_lengths.end()), params.gravity)),
       dt_(params.simulation.dt) {

@@ -27,6 +27,40 @@ struct Stiffest {
   }
 };
 
+/// The implicit integrator's step, for accuracy (StableStep::implicit_recommended). Continuum estimates
+/// over the deployed cable of length L, mass and added mass per length mu, polar inertia per length i_p:
+/// the first torsional mode of a rod fixed at the base, (pi / 2L) sqrt(GJ / i_p), and the third bending
+/// mode as a taut string under the top tension T plus a cantilever, sqrt((3 pi / L)^2 T / mu +
+/// (7.855 / L)^4 EI / mu) (for a hanging chain whose tension falls along it this is about twice the
+/// frequency: on the safe side). GJ and EI from the joint springs, k s_k.
+void recommendImplicitStep(const CableParams& params, const LinkProperties& p, double tension, StableStep& s) {
+  constexpr double kAccuracy = 0.25, kCap = 0.01;
+  double length = 0.0, mass = 0.0, polar = 0.0, torsion = 0.0, bending = 0.0;
+  const int n = p.n;
+  for (int k = 0; k < n; ++k) {
+    const double l = p.length(k);
+    if (l <= 0.0) continue;  // on a winch's drum
+    const double arc = length > 0.0 ? 0.5 * (p.length(k - 1) + l) : 0.5 * l;  // the joint's spread (cable_params.cpp)
+    length += l;
+    mass += p.mass(k) + p.added_mass_per_length(k) * l;
+    polar += p.inertia_polar(k);
+    torsion = std::max(torsion, p.stiffness_torsion(k) * arc);
+    bending = std::max(bending, std::max(p.stiffness_elevation(k), p.stiffness_azimuth(k)) * arc);
+  }
+  s.implicit_recommended = kCap;
+  s.implicit_mode = "the 10 ms cap";
+  if (length <= 0.0 || params.stiffness.model != StiffnessModel::kBending) return;
+  const double mu = mass / length, ip = polar / length;
+  const double torsional = ip > 0.0 ? M_PI / (2.0 * length) * std::sqrt(torsion / ip) : 0.0;
+  const double third_bending = std::sqrt(std::pow(3.0 * M_PI / length, 2) * tension / mu +
+                                         std::pow(7.855 / length, 4) * bending / mu);
+  const double fastest = std::max(torsional, third_bending);
+  if (kAccuracy / fastest < kCap) {
+    s.implicit_recommended = kAccuracy / fastest;
+    s.implicit_mode = torsional > third_bending ? "the first torsional mode" : "the third bending mode";
+  }
+}
+
 }  // namespace
 
 StableStep estimateStableStep(const CableParams& params, const LinkProperties& p) {
@@ -97,6 +131,7 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
   const double infinity = std::numeric_limits<double>::infinity();
   s.limit = s.rate > 0.0 ? kRk4Reach / s.rate : infinity;
   s.recommended = s.rate > 0.0 ? kRk4Reach / (kMargin * s.rate) : infinity;
+  recommendImplicitStep(params, p, tension, s);
   return s;
 }
 
@@ -107,7 +142,7 @@ void requireStableTimeStep(const CableParams& params, const LinkProperties& prop
   std::ostringstream expected;
   expected << "at most " << s.limit << " s for this cable with integrator rk4 (limited by " << s.mode
            << ", |lambda| = " << s.rate << " 1/s; recommended " << s.recommended
-           << " s), or simulation.integrator: semi_implicit";
+           << " s), or simulation.integrator: implicit (recommended dt " << s.implicit_recommended << " s)";
   std::ostringstream value;
   value << params.simulation.dt;
   throw ConfigError("simulation.dt", value.str(), expected.str());

@@ -75,6 +75,10 @@ class ChainDynamics {
   /// Accelerations, forces along the cable and energies at x. Returns false like derivative().
   bool evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out);
 
+  /// The passes before the solver at x (kinematics, external loads, joint springs and dampers) into
+  /// data(), and the ends' clamp: what the implicit integrator's own recursion reads. O(n), no allocation.
+  void computeLoads(const Eigen::VectorXd& x, const EndInputs& ends);
+
   /// Kinetic + potential + elastic + seabed contact energy at x [J] without solving for the
   /// accelerations (O(n)). `magnitude` gets the sum of the terms' absolute values [J].
   double mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude);

@@ -21,6 +21,7 @@ enum class StiffnessModel {
 enum class Integrator {
   kRk4,           ///< classical fourth-order Runge-Kutta, explicit
   kSemiImplicit,  ///< linearized backward Euler in the angular velocities
+  kImplicit,      ///< linearly implicit theta step, O(n): stiff terms in the articulated-body recursion
 };
 
 /// How the equations of motion are solved for the accelerations (dynamics/).
@@ -153,6 +154,9 @@ struct InitialState {
 struct SimulationParams {
   double dt = 0.001;                                   ///< [s]
   Integrator integrator = Integrator::kRk4;
+  /// The implicit integrator's spectral radius at infinite h omega, in [0, 1]: 1 is the implicit midpoint
+  /// rule (second order, no numerical damping), below 1 the highest modes are damped (first order).
+  double rho_infinity = 1.0;
   /// Same physics either way (docs/MODEL.md section 4).
   Formulation formulation = Formulation::kRecursive;
   double duration = 10.0;          ///< default length of an offline run (cable_sim without --duration) [s]

@@ -1,5 +1,6 @@
 #include "cable_dynamics/simulation/time_schemes/time_scheme.h"
 
+#include "cable_dynamics/simulation/time_schemes/linear_implicit.h"
 #include "cable_dynamics/simulation/time_schemes/rk4.h"
 #include "cable_dynamics/simulation/time_schemes/semi_implicit.h"
 
@@ -12,12 +13,14 @@ bool TimeScheme::evaluateEnd(ChainDynamics& dynamics, const EndInputs& ends, con
   return true;
 }
 
-std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links) {
+std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity) {
   switch (integrator) {
     case Integrator::kRk4:
       return std::make_unique<Rk4Scheme>(StateLayout::size(links));
     case Integrator::kSemiImplicit:
       return std::make_unique<SemiImplicitScheme>(links);
+    case Integrator::kImplicit:
+      return std::make_unique<LinearImplicitScheme>(links, rho_infinity);
   }
   return nullptr;
 }

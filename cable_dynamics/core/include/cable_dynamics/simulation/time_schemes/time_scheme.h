@@ -38,7 +38,7 @@ class TimeScheme {
   virtual void forget() {}
 };
 
-/// The scheme `integrator` for states of `state_size` entries and chains of `links` links.
-std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links);
+/// The scheme `integrator` for chains of `links` links (rho_infinity: the implicit scheme's, SimulationParams).
+std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity = 1.0);
 
 }  // namespace cable_dynamics

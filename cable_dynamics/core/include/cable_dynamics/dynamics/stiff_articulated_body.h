@@ -1,0 +1,101 @@
+#pragma once
+/// \file
+/// \brief The articulated-body recursion with "effective inertia" terms, for the linearly implicit
+///        integrator (docs/MODEL.md section 6, "Implicit integrator"): it solves
+///        (M + c_D D + c_K K) omega' = rhs in O(n), where D and K are the velocity and rotation
+///        Jacobians of the stiff forces, each local to a joint, a link or the load:
+///        - joint k's springs and dampers (bending model): 3x3 blocks on the relative rotation of link k
+///          to link k-1 (or to the clamp), K_j = k_b (I - m m^T) + k_t m m^T, D_j = c_e (I - m m^T) +
+///          c_t m m^T with m the joint's mean axis. They become the joint's impedance: the joint passes
+///          the force rigidly and a torque -(c_D D_j + c_K K_j) nu for a relative angular acceleration nu.
+///        - link k's drag, linearized in the link's spatial velocity (angular velocity, base-end velocity):
+///          a 6x6 damping added to the link's spatial inertia about its base end;
+///        - link k's geometric stiffness from the tension: the moment of the outboard loads about the
+///          base end turns with the link, K_g = (G . u) (I - u u^T), G = l F_outboard + first moment of
+///          the link's own loads (gravity's stiffness of a hanging chain exactly; clipped at 0 in compression);
+///        - the load's drag Jacobian and its PD coupling (k_c, c_c) added to the load's mass.
+///
+/// Unlike articulated_body.cpp, whose joints pass no torque (so spin and the two transverse directions
+/// separate, and 3x3 blocks suffice), here each joint passes a torque through its impedance, so the
+/// outboard part shows its parent a 6x6 articulated inertia (rotation and translation of the joint point,
+/// world axes). Every per-link quantity is sized in the constructor: no heap allocation in solve().
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/StdVector>
+
+#include "cable_dynamics/dynamics/chain_data.h"
+#include "cable_dynamics/dynamics/chain_model.h"
+#include "cable_dynamics/dynamics/state_layout.h"
+
+namespace cable_dynamics {
+
+/// The Jacobian terms of one link and its joint, and the recursion's results for it (SI units).
+struct StiffLinkTerms {
+  Eigen::Matrix3d joint_stiffness = Eigen::Matrix3d::Zero();  ///< K_j of joint k (to link k-1 or the clamp) [N m/rad]
+  Eigen::Matrix3d joint_damping = Eigen::Matrix3d::Zero();    ///< D_j [N m s/rad]
+  /// Drag damping over (omega, v_base): torque about the base end per omega [N m s], per v_base [N s],
+  /// force per v_base [N s/m] (force per omega is drag_rv^T).
+  Eigen::Matrix3d drag_rr = Eigen::Matrix3d::Zero(), drag_rv = Eigen::Matrix3d::Zero(), drag_vv = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< u at the linearization
+  double geometric = 0.0;  ///< G . u, the geometric stiffness across the link [N m/rad]
+  Eigen::Vector3d extra_torque = Eigen::Vector3d::Zero();  ///< added to the right-hand side: about the base end [N m]
+  Eigen::Vector3d extra_force = Eigen::Vector3d::Zero();   ///< [N]
+  // Backward pass: nu = -(forward_rot a_rot + forward_lin a_lin) - nu_bias for the parent's motion a.
+  Eigen::Matrix3d forward_rot = Eigen::Matrix3d::Zero(), forward_lin = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d nu_bias = Eigen::Vector3d::Zero();  ///< [rad/s^2]
+  // Forward pass.
+  Eigen::Vector3d angular_acc = Eigen::Vector3d::Zero();  ///< omega' [rad/s^2]
+  Eigen::Vector3d delta_acc = Eigen::Vector3d::Zero();    ///< d_k: base-end acceleration less the known one [m/s^2]
+  // The link's own force rows, kept for the joint forces: force = own_vr alpha + own_vv d + own_bias.
+  Eigen::Matrix3d own_vr = Eigen::Matrix3d::Zero(), own_vv = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d own_bias = Eigen::Vector3d::Zero();  ///< [N]
+  double tension = 0.0;  ///< at the base end, -J_k . u_k, from the last solve() [N]
+};
+
+/// Terms and solver of the implicit step for one chain. Call linearize() after ChainDynamics::computeLoads(),
+/// then clearExtra() / addJacobianTimes() to build the right-hand side, then solve().
+class StiffArticulatedBody {
+ public:
+  explicit StiffArticulatedBody(int links);
+
+  /// Joint, drag, geometric and load Jacobians at the state whose loads `data` holds. O(n). The geometric
+  /// stiffness reads the tensions of the last solve() (inertial forces included: a whipping cable's
+  /// tension is mostly centripetal) when `use_last_tension`, else the tension the external loads alone
+  /// would hold statically.
+  void linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends, bool use_last_tension = false);
+
+  /// Sets the extra right-hand side to zero.
+  void clearExtra();
+  /// Adds stiffness_factor K r + damping_factor D r to the right-hand side, as generalized forces:
+  /// r is a rotation (or rotation rate) of each link, `rotation` (3 x n) [rad or rad/s], with
+  /// `base_rotation` the clamp's (the joint springs act on the difference), a translation of each base
+  /// end `translation` (3 x n) (the drag's damping reads it) and of the tip, `tip_translation`.
+  void addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+                        const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
+                        const Eigen::Matrix3Xd& translation, const Eigen::Vector3d& tip_translation);
+
+  /// Solves (M + damping_weight D + stiffness_weight K) omega' = rhs + extra at the state of `data`
+  /// (rhs: everything computeLoads() put there, as the ordinary recursion reads it). Results in
+  /// link(k).angular_acc, link(k).delta_acc, tipDelta(), baseForce(). O(n), no heap allocation.
+  void solve(const ChainModel& model, const ChainData& data, double damping_weight, double stiffness_weight);
+
+  const StiffLinkTerms& link(int k) const { return links_[k]; }
+  /// d at the tip: the load's acceleration is tip_known_acc + tipDelta() [m/s^2].
+  const Eigen::Vector3d& tipDelta() const { return tip_delta_; }
+  /// Force the base exerts on the base link at its base end [N] (the joint force J of the base link).
+  const Eigen::Vector3d& baseForce() const { return base_force_; }
+
+ private:
+  std::vector<StiffLinkTerms, Eigen::aligned_allocator<StiffLinkTerms>> links_;
+  Eigen::Matrix3d load_drag_ = Eigen::Matrix3d::Zero();  ///< load drag's damping [N s/m]
+  double coupling_stiffness_ = 0.0, coupling_damping_ = 0.0;  ///< of the PD coupling, when coupled
+  Eigen::Vector3d load_extra_ = Eigen::Vector3d::Zero();  ///< extra force on the load [N]
+  Eigen::Vector3d tip_delta_ = Eigen::Vector3d::Zero(), base_force_ = Eigen::Vector3d::Zero();
+  double tip_tension_ = 0.0;  ///< the load's pull along the last link [N]
+  int points_ = 0;
+  double nodes_[8] = {}, weights_[8] = {};
+};
+
+}  // namespace cable_dynamics

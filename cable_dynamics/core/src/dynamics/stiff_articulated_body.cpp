@@ -1,0 +1,291 @@
+/// \file
+/// \brief The articulated-body recursion with effective-inertia terms (stiff_articulated_body.h).
+///
+/// Unknowns per link: its angular acceleration alpha_k and d_k, its base end's acceleration less the
+/// known part a0_k (as in articulated_body.cpp: a_k = a0_k + d_k, d_{k+1} = d_k + l_k alpha_k x u_k).
+/// Spatial quantities are (rotation; translation) pairs at a link's base end in world axes: the link's
+/// Newton-Euler equations about its base end read I_k (alpha_k; d_k) + p_k = W_k - X^T W_{k+1}, with I_k
+/// its spatial inertia (plus the drag's damping and the geometric stiffness, weighted), p_k the bias
+/// (velocity terms, known accelerations, minus the loads), W_k the wrench joint k passes to it and X^T the
+/// shift of a wrench at the far end to the base end (torque + l u x force). Joint k passes the force
+/// rigidly and the torque -Z_k nu_k, nu_k = alpha_k - alpha_{k-1}, Z_k = c_D D_j + c_K K_j.
+///
+/// Backward (tip to base): the outboard part's articulated inertia at joint k, I^A = I_k + X^T I^a X, and
+/// bias p^A; with D = I^A_rr + Z, the joint's motion nu = -D^-1 (U^T X a_parent + p^A_r) (U: I^A's
+/// rotation columns), and the parent sees I^a = I^A - U D^-1 U^T, p^a = p^A - U D^-1 p^A_r. Forward
+/// (base to tip): alpha_k = alpha_{k-1} + nu_k, d_k from the parent's far end.
+///
+/// With the loads' passes, this is the implicit step's hot path (twice a step): no heap allocation, and
+/// measure any change with bench/ (stiff_step).
+#include "cable_dynamics/dynamics/stiff_articulated_body.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/hot_path.h"
+
+// Inline every Eigen call of the two hot functions: without it GCC calls the 3x3 products out of line
+// (and in the default architecture's code from the AVX2 and AVX-512 copies).
+#if defined(__GNUC__) && !defined(__clang__)
+#define CABLE_FLATTEN __attribute__((flatten))
+#else
+#define CABLE_FLATTEN
+#endif
+
+namespace cable_dynamics {
+namespace {
+
+inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return s;
+}
+
+inline Eigen::Matrix3d symmetrized(const Eigen::Matrix3d& m) { return 0.5 * (m + m.transpose()); }
+
+/// Spring (or damper) block of a joint with mean axis m: `across` for bending, `about` for twist.
+inline Eigen::Matrix3d jointBlock(double across, double about, const Eigen::Vector3d& m) {
+  const Eigen::Matrix3d mm = m * m.transpose();
+  return across * (Eigen::Matrix3d::Identity() - mm) + about * mm;
+}
+
+}  // namespace
+
+StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links) {}
+
+CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends,
+                                     bool use_last_tension) {
+  const int n = model.links(), first = model.firstLink();
+  const LinkProperties& p = model.properties();
+  const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
+  const bool in_water = model.fluidDensity() > 0.0;
+  if (points_ == 0) {
+    points_ = model.drag().points();
+    gaussLegendreUnit(points_, nodes_, weights_);
+  }
+  const LinkBlocks& blocks = data.links;
+  for (int k = first; k < n; ++k) {
+    StiffLinkTerms& t = links_[k];
+    const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
+    t.axis = u;
+    // Joint k: bend across its mean axis, twist about it (the paper model's springs are not handled
+    // here: the simulator refuses them with this integrator).
+    if (bending) {
+      const Eigen::Vector3d prev = k > first ? blocks.get(&LinkBlock::u, k - 1) : data.clamp_axis;
+      const Eigen::Vector3d sum = prev + u;
+      const Eigen::Vector3d mean = sum.norm() > 1e-9 ? Eigen::Vector3d(sum.normalized()) : u;
+      t.joint_stiffness = jointBlock(p.stiffness_elevation(k), p.stiffness_torsion(k), mean);
+      t.joint_damping = jointBlock(p.damping_elevation(k), p.damping_torsion(k), mean);
+    }
+    // Drag: per length f = c_n |v_n| v_n + c_t |v_t| v_t with v = current - velocity, whose derivative
+    // with respect to the structure's velocity is -C, C = c_n (|v_n| P + v_n v_n^T / |v_n|) + 2 c_t |v.u| u u^T.
+    // A point at s moves at v_base + s omega x u = v_base - s [u]x omega: with C0, C1, C2 the integrals of
+    // C, s C, s^2 C, the damping is [[-[u]x C2 [u]x, [u]x C1], [-C1 [u]x, C0]] over (omega, v_base).
+    // The current is taken at the link's middle (a Jacobian: an approximation costs no order). Then
+    // v.u = along is the same all along the link and v_n(s) = n0 - s u' (u' normal to u), so each C_m is
+    // A_m P + b W_m u u^T + G_m n0 n0^T - G_{m+1} (n0 u'^T + u' n0^T) + G_{m+2} u' u'^T with the
+    // quadrature's sums W_m of w s^m, A_m of w s^m c_n |v_n|, G_m of w s^m c_n / |v_n|, b = 2 c_t |along|.
+    if (in_water) {
+      const LinkConstants& c = model.of(k);
+      const int i = LinkBlocks::lane(k);
+      const double l = c.length[i], cn = c.drag_normal[i], ct = c.drag_tangential[i];
+      const Eigen::Vector3d base = blocks.get(&LinkBlock::base_pos, k), v0 = blocks.get(&LinkBlock::base_vel, k);
+      const Eigen::Vector3d rate = blocks.get(&LinkBlock::axis_rate, k);
+      const Eigen::Vector3d relative = data.current.at(base.z() + 0.5 * l * u.z()) - v0;
+      const double along = relative.dot(u);
+      const Eigen::Vector3d n0 = relative - along * u;
+      double w[3] = {0.0, 0.0, 0.0}, a[3] = {0.0, 0.0, 0.0}, g[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+      for (int q = 0; q < points_; ++q) {
+        const double s = nodes_[q] * l, weight = weights_[q] * l;
+        const double speed = (n0 - s * rate).norm();
+        const double inverse = speed > 1e-12 ? cn / speed : 0.0;
+        double power = weight;  // w s^m
+        for (int m = 0; m < 5; ++m) {
+          if (m < 3) {
+            w[m] += power;
+            a[m] += power * cn * speed;
+          }
+          g[m] += power * inverse;
+          power *= s;
+        }
+      }
+      const double b = 2.0 * ct * std::abs(along);
+      const Eigen::Matrix3d uu = u * u.transpose(), P = Eigen::Matrix3d::Identity() - uu;
+      const Eigen::Matrix3d nn = n0 * n0.transpose(), nr = n0 * rate.transpose(), rr = rate * rate.transpose();
+      // C0 (force per base velocity).
+      t.drag_vv = a[0] * P + (b * w[0]) * uu + g[0] * nn - g[1] * (nr + nr.transpose()) + g[2] * rr;
+      // [u]x C1: [u]x u = 0, [u]x P = [u]x.
+      const Eigen::Vector3d un = u.cross(n0), ur = u.cross(rate);
+      t.drag_rv = a[1] * skew(u) + g[1] * un * n0.transpose() - g[2] * (un * rate.transpose() + ur * n0.transpose()) +
+                  g[3] * ur * rate.transpose();
+      // [u]x^T C2 [u]x: [u]x^T P [u]x = P, [u]x^T u u^T [u]x = 0, and (u x n)(u x n)^T for n n^T.
+      const Eigen::Matrix3d unur = un * ur.transpose();
+      t.drag_rr = a[2] * P + g[2] * un * un.transpose() - g[3] * (unur + unur.transpose()) + g[4] * ur * ur.transpose();
+    }
+  }
+  // Geometric stiffness: the moment of everything outboard about link k's base end, u x G with
+  // G = l F_outboard + (the link's own first moment), turns with the link: dtau = -(G.u) P dtheta - ...;
+  // the symmetric, restoring part (G.u) P is kept, in tension only. With the joint forces of a solve,
+  // G.u = l (T_k + T_{k+1}) / 2, the mean tension along the link times its length.
+  if (use_last_tension) {
+    for (int k = first; k < n; ++k) {
+      const double far = k + 1 < n ? links_[k + 1].tension : tip_tension_;
+      links_[k].geometric = std::max(0.0, 0.5 * model.get(&LinkConstants::length, k) * (links_[k].tension + far));
+    }
+  }
+  Eigen::Vector3d outboard = data.load_external;
+  for (int k = n - 1; k >= first && !use_last_tension; --k) {
+    StiffLinkTerms& t = links_[k];
+    const double l = model.get(&LinkConstants::length, k);
+    const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
+    const Eigen::Vector3d g = l * outboard + blocks.get(&LinkBlock::moment, k);
+    t.geometric = std::max(0.0, g.dot(u));
+    outboard += blocks.get(&LinkBlock::force, k);
+  }
+  // The load: its drag 1/2 rho C_d A |v| v has the damping 1/2 rho C_d A (|v| I + v v^T / |v|).
+  const LoadConstants& load = model.load();
+  load_drag_.setZero();
+  if (in_water && load.drag_area > 0.0) {
+    const Eigen::Vector3d relative = data.current.at(data.tip_position.z()) - data.tip_velocity;
+    const double speed = relative.norm(), k = 0.5 * model.fluidDensity() * load.drag_area;
+    load_drag_ = (k * speed) * Eigen::Matrix3d::Identity();
+    if (speed > 1e-12) load_drag_ += (k / speed) * relative * relative.transpose();
+  }
+  coupling_stiffness_ = ends.load_coupled ? load.coupling_stiffness : 0.0;
+  coupling_damping_ = ends.load_coupled ? load.coupling_damping : 0.0;
+}
+
+void StiffArticulatedBody::clearExtra() {
+  for (StiffLinkTerms& t : links_) {
+    t.extra_torque.setZero();
+    t.extra_force.setZero();
+  }
+  load_extra_.setZero();
+}
+
+CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+                                            const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
+                                            const Eigen::Matrix3Xd& translation,
+                                            const Eigen::Vector3d& tip_translation) {
+  const int n = model.links(), first = model.firstLink();
+  for (int k = first; k < n; ++k) {
+    StiffLinkTerms& t = links_[k];
+    const Eigen::Vector3d r = rotation.col(k);
+    const Eigen::Vector3d relative = r - (k > first ? Eigen::Vector3d(rotation.col(k - 1)) : base_rotation);
+    // Joint k: g(theta + dtheta) = g - K dtheta puts -K_j (dtheta_k - dtheta_{k-1}) on link k and the
+    // opposite on link k-1; "K r" is minus that.
+    const Eigen::Vector3d joint =
+        stiffness_factor * (t.joint_stiffness * relative) + damping_factor * (t.joint_damping * relative);
+    t.extra_torque += joint;
+    if (k > first) links_[k - 1].extra_torque -= joint;
+    // The link's geometric stiffness (on the rotation across it) and drag damping.
+    const Eigen::Vector3d v = translation.col(k);
+    t.extra_torque += damping_factor * (t.drag_rr * r + t.drag_rv * v);
+    t.extra_force += damping_factor * (t.drag_rv.transpose() * r + t.drag_vv * v);
+    t.extra_torque += (stiffness_factor * t.geometric) * (r - r.dot(t.axis) * t.axis);  // (G.u) P r
+  }
+  load_extra_ += (stiffness_factor * coupling_stiffness_ + damping_factor * coupling_damping_) * tip_translation +
+                 damping_factor * (load_drag_ * tip_translation);
+}
+
+CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data, double damping_weight,
+                                 double stiffness_weight) {
+  const int n = model.links(), first = model.firstLink();
+  const LinkBlocks& blocks = data.links;
+  const LoadConstants& load = model.load();
+  const double cd = damping_weight, ck = stiffness_weight;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  // The load, a point at the tip: no rotational inertia, its mass plus the weighted drag and coupling.
+  Eigen::Matrix3d child_rr = Eigen::Matrix3d::Zero(), child_rv = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d child_vv = (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity + cd * load_drag_;
+  Eigen::Vector3d child_pr = Eigen::Vector3d::Zero();
+  Eigen::Vector3d child_pv = load.inertia * data.tip_known_acc - data.load_external - load_extra_;
+  for (int k = n - 1; k >= first; --k) {
+    StiffLinkTerms& t = links_[k];
+    const LinkConstants& c = model.of(k);
+    const LinkBlock& block = blocks.of(k);
+    const int i = LinkBlocks::lane(k);
+    const double l = c.length[i];
+    const Eigen::Vector3d u = toEigen(block.u[i]);
+    // The outboard part's inertia and bias moved from the far end to the base end: with R = l [u]x,
+    // rr' = rr - rv R + R rv^T - R vv R (R rv^T = -(rv R)^T), rv' = rv + R vv, torque' = torque + R force.
+    const Eigen::Matrix3d R = l * skew(u);
+    const Eigen::Matrix3d r_vv = R * child_vv;
+    const Eigen::Matrix3d rv_r = child_rv * R;
+    Eigen::Matrix3d a_rr = child_rr - rv_r - rv_r.transpose() - r_vv * R;
+    Eigen::Matrix3d a_rv = child_rv + r_vv;
+    Eigen::Matrix3d a_vv = child_vv;
+    Eigen::Vector3d a_pr = child_pr + R * child_pv;
+    Eigen::Vector3d a_pv = child_pv;
+    // The link's own spatial inertia about its base end: rotation (c1 P + I_P u u^T), coupling h [u]x,
+    // translation l A; plus the drag's damping and the geometric stiffness, weighted.
+    const Eigen::Matrix3d uu = u * u.transpose(), P = identity - uu;
+    const double la = l * c.added[i];
+    const Eigen::Matrix3d own_rv = c.half_moment[i] * skew(u) + cd * t.drag_rv;
+    t.own_vr = own_rv.transpose();
+    t.own_vv = c.translational[i] * identity - la * uu + cd * t.drag_vv;
+    a_rr += (c.own_transverse[i] + ck * t.geometric) * P + c.polar[i] * uu + cd * t.drag_rr;
+    a_rv += own_rv;
+    a_vv += t.own_vv;
+    // Its bias, as the ordinary recursion has it (articulated_body.cpp, linkTermsPass), less the extra
+    // right-hand side.
+    const Eigen::Vector3d known = toEigen(block.known_acc[i]), beta = toEigen(block.beta[i]);
+    const Eigen::Vector3d omega = toEigen(block.omega[i]), rate = toEigen(block.axis_rate[i]);
+    const Eigen::Vector3d mean = l * known + (0.5 * l * l) * beta;
+    const Eigen::Vector3d own_force = c.translational[i] * known + c.half_moment[i] * beta -
+                                      (c.added[i] * u.dot(mean)) * u - toEigen(block.force[i]);
+    const Eigen::Vector3d own_moment = c.half_moment[i] * known + c.third_moment[i] * beta - toEigen(block.moment[i]);
+    const double gyroscopic = c.polar[i] - c.thick_transverse[i];
+    a_pr += u.cross(own_moment) + (gyroscopic * u.dot(omega)) * rate - toEigen(block.torque[i]) - t.extra_torque;
+    t.own_bias = own_force - t.extra_force;
+    a_pv += t.own_bias;
+    // Joint k: D = I^A_rr + Z.
+    const Eigen::Matrix3d joint = symmetrized(a_rr) + cd * t.joint_damping + ck * t.joint_stiffness;
+    const Eigen::Matrix3d inverse = joint.inverse();
+    t.forward_rot = inverse * a_rr;
+    t.forward_lin = inverse * a_rv;
+    t.nu_bias = inverse * a_pr;
+    if (k == first) {
+      // Force rows of the wrench at the base: J = rv^T nu + p_v (d = 0 at the base).
+      base_force_ = a_pv;  // completed after the forward pass
+      child_rv = a_rv;     // keep for the base force
+      child_pv = a_pv;
+      break;
+    }
+    child_rr = symmetrized(a_rr - a_rr * t.forward_rot);
+    child_rv = a_rv - a_rr * t.forward_lin;
+    child_vv = symmetrized(a_vv - a_rv.transpose() * t.forward_lin);
+    child_pr = a_pr - a_rr * t.nu_bias;
+    child_pv = a_pv - a_rv.transpose() * t.nu_bias;
+  }
+  // Forward: the base's clamp is at rest in this linearization (alpha = nu at the base link, d = 0).
+  Eigen::Vector3d alpha = Eigen::Vector3d::Zero(), d = Eigen::Vector3d::Zero();
+  for (int k = first; k < n; ++k) {
+    StiffLinkTerms& t = links_[k];
+    const Eigen::Vector3d nu = -(t.forward_rot * alpha + t.forward_lin * d) - t.nu_bias;
+    alpha += nu;
+    t.angular_acc = alpha;
+    t.delta_acc = d;
+    if (k == first) base_force_ = child_rv.transpose() * nu + child_pv;
+    const double l = model.get(&LinkConstants::length, k);
+    d -= l * blocks.get(&LinkBlock::u, k).cross(alpha);  // d_{k+1} = d_k + l alpha x u
+  }
+  tip_delta_ = d;
+  // Joint forces from the tip inwards, J_k = J_{k+1} + (the link's inertia force less its loads), for
+  // the tensions the next linearization's geometric stiffness reads.
+  const Eigen::Matrix3d load_mass =
+      (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity + cd * load_drag_;
+  Eigen::Vector3d joint = load_mass * d + load.inertia * data.tip_known_acc - data.load_external - load_extra_;
+  tip_tension_ = -joint.dot(blocks.get(&LinkBlock::u, n - 1));
+  for (int k = n - 1; k >= first; --k) {
+    StiffLinkTerms& t = links_[k];
+    joint += t.own_vr * t.angular_acc + t.own_vv * t.delta_acc + t.own_bias;
+    t.tension = -joint.dot(blocks.get(&LinkBlock::u, k));
+  }
+}
+
+}  // namespace cable_dynamics

@@ -1,0 +1,217 @@
+// The implicit integrator's recursion (stiff_articulated_body.cpp) against independent computations:
+// - with zero weights and no extra right-hand side it is the ordinary equations of motion: the same
+//   angular accelerations as ChainDynamics::derivative (the O(n) recursion of articulated_body.cpp, itself
+//   held against the paper model and sympy);
+// - its drag damping is the drag's velocity Jacobian: central differences of the external-load pass;
+// - with weights it solves (M + c_D D + c_K K) a = rhs + c_K K r + D r, which this test assembles densely
+//   from the dense formulation's mass matrix and generalized forces (dense_solver.cpp) and the Jacobian
+//   blocks mapped through the links' velocity Jacobians, and solves by LU.
+#include <cmath>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include "cable_dynamics/dynamics/chain_dynamics.h"
+#include "cable_dynamics/dynamics/stiff_articulated_body.h"
+#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/params/states.h"
+
+using namespace cable_dynamics;
+
+namespace {
+
+/// A stiff cable (bending model with springs and dampers) in a current, with the tip coupled to a
+/// target (`attached`) or free, unequal links.
+CableParams stiffCable(int n, bool attached, bool in_water) {
+  std::vector<std::string> o = {
+      "cable.links=" + std::to_string(n),
+      "cable.stiffness={model: bending, bending_rigidity: 300, torsional_rigidity: 150}",
+      "cable.damping={elevation: 2.0, azimuth: 2.0, torsion: 0.3}",
+      std::string("fluid.density=") + (in_water ? "1025" : "0"),
+      "fluid.current=[0.8, -0.3, 0.1]",
+  };
+  if (attached) o.push_back("load={mass: 4.0, volume: 0.002, mode: attached, coupling: {stiffness: 5000, damping: 300}}");
+  CableParams p = loadConfigString(
+      "cable: {links: 1, length: 6.0, diameter: 0.04, mass_per_length: 1.5}\nload: {mass: 4.0, volume: 0.002}\n"
+      "fluid: {drag_normal: 1.2, drag_tangential: 0.02, added_mass: 1.0}\n",
+      o);
+  for (int k = 0; k < n; ++k) p.link_lengths[k] = 0.4 + 0.05 * k;
+  return p;
+}
+
+EndInputs endsFor(const CableParams& p, const Eigen::Vector3d& target) {
+  EndInputs e;
+  e.load_coupled = p.load.mode != LoadMode::kFree;
+  e.target_position = target;
+  e.target_velocity = Eigen::Vector3d(0.2, -0.1, 0.05);
+  return e;
+}
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return s;
+}
+
+}  // namespace
+
+TEST(ImplicitRecursion, ZeroWeightsGiveTheOrdinaryAccelerations) {
+  for (bool attached : {false, true}) {
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+      const int n = 9;
+      const CableParams p = stiffCable(n, attached, true);
+      ChainDynamics f(p);
+      Eigen::VectorXd q, qd, x(f.stateSize()), xdot(f.stateSize());
+      randomState(n, seed, q, qd);
+      f.stateFromPaper(q, qd, x);
+      const EndInputs ends = endsFor(p, Eigen::Vector3d(0.5, 0.2, 5.0));
+      ASSERT_TRUE(f.derivative(x, ends, xdot));
+      StiffArticulatedBody solver(n);
+      f.computeLoads(x, ends);
+      solver.linearize(f.model(), f.data(), ends);
+      solver.clearExtra();
+      solver.solve(f.model(), f.data(), 0.0, 0.0);
+      double scale = 0.0, error = 0.0;
+      for (int k = 0; k < n; ++k) {
+        const Eigen::Vector3d expected = xdot.segment<3>(StateLayout::omega(k));
+        scale = std::max(scale, expected.norm());
+        error = std::max(error, (solver.link(k).angular_acc - expected).norm());
+      }
+      // Same equations, a different elimination order (6x6 blocks here, 3x3 and 2x2 there): round-off.
+      EXPECT_LT(error, 1e-9 * scale) << "seed " << seed << (attached ? " attached" : " free");
+    }
+  }
+}
+
+TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
+  for (bool in_water : {false, true}) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      const int n = 7, dof = 3 * n;
+      const CableParams p = stiffCable(n, true, in_water);
+      ChainDynamics f(p);
+      Eigen::VectorXd q, qd, x(f.stateSize()), rhs(dof);
+      randomState(n, seed + 10, q, qd);
+      f.stateFromPaper(q, qd, x);
+      const EndInputs ends = endsFor(p, Eigen::Vector3d(0.3, -0.2, 4.0));
+      const double cd = 0.004, ck = 0.004 * 0.004;  // theta h and (theta h)^2 at h = 8 ms
+      const double a = 0.003, b = 0.7;              // the extra right-hand side's factors
+      // Dense: M and the generalized forces (springs, dampers, drag, coupling, velocity terms).
+      f.generalizedForces(x, ends, true, rhs);
+      Eigen::MatrixXd system = f.massMatrix();
+      const ChainData& data = f.data();
+      StiffArticulatedBody solver(n);
+      solver.linearize(f.model(), data, ends);
+      // Velocity Jacobians: link k's base end moves at sum_{j<k} l_j omega_j x u_j = sum -l_j [u_j]x omega_j,
+      // the tip at the sum over all links.
+      std::vector<Eigen::MatrixXd> base(n + 1, Eigen::MatrixXd::Zero(3, dof));
+      for (int k = 1; k <= n; ++k) {
+        base[k] = base[k - 1];
+        const Eigen::Vector3d u = data.links.get(&LinkBlock::u, k - 1);
+        base[k].block<3, 3>(0, 3 * (k - 1)) += -f.model().get(&LinkConstants::length, k - 1) * skew(u);
+      }
+      Eigen::MatrixXd damping = Eigen::MatrixXd::Zero(dof, dof), stiffness = Eigen::MatrixXd::Zero(dof, dof);
+      for (int k = 0; k < n; ++k) {
+        const StiffLinkTerms& t = solver.link(k);
+        // Joint k on the relative rotation of link k to link k-1 (to the clamp at rest for k = 0).
+        Eigen::MatrixXd select = Eigen::MatrixXd::Zero(3, dof);
+        select.block<3, 3>(0, 3 * k).setIdentity();
+        if (k > 0) select.block<3, 3>(0, 3 * (k - 1)) = -Eigen::Matrix3d::Identity();
+        stiffness += select.transpose() * t.joint_stiffness * select;
+        damping += select.transpose() * t.joint_damping * select;
+        // The link's geometric stiffness across it, and its drag over (omega_k, v_base,k).
+        const Eigen::Vector3d u = t.axis;
+        stiffness.block<3, 3>(3 * k, 3 * k) += t.geometric * (Eigen::Matrix3d::Identity() - u * u.transpose());
+        Eigen::MatrixXd spatial(6, dof);
+        spatial.topRows(3) = Eigen::MatrixXd::Zero(3, dof);
+        spatial.topRows(3).block<3, 3>(0, 3 * k).setIdentity();
+        spatial.bottomRows(3) = base[k];
+        Eigen::Matrix<double, 6, 6> drag;
+        drag << t.drag_rr, t.drag_rv, t.drag_rv.transpose(), t.drag_vv;
+        damping += spatial.transpose() * drag * spatial;
+      }
+      // The load: coupling and drag at the tip.
+      const LoadConstants& load = f.model().load();
+      stiffness += load.coupling_stiffness * base[n].transpose() * base[n];
+      Eigen::Matrix3d load_drag = Eigen::Matrix3d::Zero();
+      if (in_water && load.drag_area > 0.0) {
+        const Eigen::Vector3d v = data.current.at(data.tip_position.z()) - data.tip_velocity;
+        const double c = 0.5 * f.model().fluidDensity() * load.drag_area;
+        load_drag = c * (v.norm() * Eigen::Matrix3d::Identity() + v * v.transpose() / v.norm());
+      }
+      damping += base[n].transpose() * (load.coupling_damping * Eigen::Matrix3d::Identity() + load_drag) * base[n];
+      system += cd * damping + ck * stiffness;
+      // An arbitrary rotation r: the extra right-hand side a K r + b D r, with the translations D reads
+      // taken consistently from r.
+      Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(dof, -1.0, 1.3).array().sin();
+      Eigen::Matrix3Xd rotation(3, n), translation(3, n);
+      for (int k = 0; k < n; ++k) {
+        rotation.col(k) = r.segment<3>(3 * k);
+        translation.col(k) = base[k] * r;
+      }
+      const Eigen::Vector3d tip = base[n] * r;
+      const Eigen::VectorXd plain = f.massMatrix().partialPivLu().solve(rhs);
+      const Eigen::VectorXd dense = system.partialPivLu().solve(rhs + a * (stiffness * r) + b * (damping * r));
+      // The terms matter here (else the comparison below would not test them).
+      EXPECT_GT((dense - plain).lpNorm<Eigen::Infinity>(), 1e-3 * dense.lpNorm<Eigen::Infinity>());
+      // The recursion, at the same state.
+      f.computeLoads(x, ends);
+      solver.linearize(f.model(), f.data(), ends);
+      solver.clearExtra();
+      solver.addJacobianTimes(f.model(), a, b, rotation, Eigen::Vector3d::Zero(), translation, tip);
+      solver.solve(f.model(), f.data(), cd, ck);
+      double error = 0.0;
+      for (int k = 0; k < n; ++k) error = std::max(error, (solver.link(k).angular_acc - dense.segment<3>(3 * k)).norm());
+      EXPECT_LT(error, 1e-9 * dense.lpNorm<Eigen::Infinity>()) << "seed " << seed << (in_water ? " in water" : " in air");
+      // The tip's d: the load's acceleration less its known part, the tip Jacobian times the solution.
+      EXPECT_LT((solver.tipDelta() - base[n] * dense).norm(), 1e-9 * (base[n] * dense).norm() + 1e-12);
+    }
+  }
+}
+
+TEST(ImplicitRecursion, DragDampingIsTheDragsVelocityJacobian) {
+  // Link k's drag (external_loads.cpp: the Gauss quadrature of the Morison force) as the state's angular
+  // velocities change: omega_k moves link k's axis rate (columns omega of the damping), omega_{k-1} its base
+  // end's velocity by l_{k-1} domega x u_{k-1} (columns v_base). Uniform current: the Jacobian's
+  // mid-link current is then exact.
+  const int n = 6, k = 3;
+  const CableParams p = stiffCable(n, false, true);
+  ChainDynamics f(p);
+  Eigen::VectorXd q, qd, x(f.stateSize());
+  randomState(n, 5, q, qd);
+  f.stateFromPaper(q, qd, x);
+  const EndInputs ends;
+  StiffArticulatedBody solver(n);
+  f.computeLoads(x, ends);
+  solver.linearize(f.model(), f.data(), ends);
+  const StiffLinkTerms& t = solver.link(k);
+  const Eigen::Vector3d u = f.data().links.get(&LinkBlock::u, k), prev = f.data().links.get(&LinkBlock::u, k - 1);
+  const double l_prev = f.model().get(&LinkConstants::length, k - 1), eps = 1e-6;
+  // The wrench on link k about its base end: torque u x moment, force.
+  const auto wrench = [&](const Eigen::VectorXd& state) {
+    f.computeLoads(state, ends);
+    Eigen::Matrix<double, 6, 1> out;
+    out << u.cross(f.data().links.get(&LinkBlock::moment, k)), f.data().links.get(&LinkBlock::force, k);
+    return out;
+  };
+  double scale = 0.0, error = 0.0;
+  for (int j = 0; j < 3; ++j) {
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(j);
+    for (int which : {k, k - 1}) {
+      Eigen::VectorXd plus = x, minus = x;
+      plus.segment<3>(StateLayout::omega(which)) += eps * e;
+      minus.segment<3>(StateLayout::omega(which)) -= eps * e;
+      const Eigen::Matrix<double, 6, 1> numeric = (wrench(plus) - wrench(minus)) / (2.0 * eps);
+      Eigen::Matrix<double, 6, 1> predicted;
+      if (which == k) {  // -(damping) (e, 0)
+        predicted << -(t.drag_rr * e), -(t.drag_rv.transpose() * e);
+      } else {  // -(damping) (0, dv), dv = l_{k-1} e x u_{k-1}
+        const Eigen::Vector3d dv = l_prev * e.cross(prev);
+        predicted << -(t.drag_rv * dv), -(t.drag_vv * dv);
+      }
+      scale = std::max(scale, numeric.norm());
+      error = std::max(error, (numeric - predicted).norm());
+    }
+  }
+  EXPECT_GT(scale, 1e-3);
+  EXPECT_LT(error, 1e-6 * scale);  // central differences: round-off and eps^2 terms
+}
