@@ -29,30 +29,41 @@ def binary():
     return path
 
 
-def model_statics(tmp_path, links, ei=EI):
-    config = tmp_path / f"beam_{links}_{ei}.yaml"
-    config.write_text(
-        f"cable: {{links: {links}, length: {L}, diameter: {D}, mass_per_length: {MASS},\n"
-        f"        stiffness: {{model: bending, bending_rigidity: {ei}, torsional_rigidity: {max(ei, 1.0) / 2}}}}}\n"
-        f"base: {{fixity: pinned}}\n"
-        f"load: {{mode: anchored, motion: {{offset: [{OFFSET[0]}, {OFFSET[1]}, {OFFSET[2]}]}}, coupling: {{stiffness: 1.0e7}}}}\n"
-        f"fluid: {{density: 0.0}}\n")
-    out = tmp_path / f"beam_{links}_{ei}.csv"
+def run_statics(tmp_path, name, links, config_text):
+    """cable_sim --statics on `config_text`: the tip [m] and the cable's forces on the base and on the
+    load [N], in the elastica's frame (z up)."""
+    config = tmp_path / f"{name}.yaml"
+    config.write_text(config_text)
+    out = tmp_path / f"{name}.csv"
     done = subprocess.run([binary(), "--config", str(config), "--statics", "--output", str(out)], capture_output=True,
                           text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     header = out.read_text().splitlines()[0].split(",")
     row = dict(zip(header, np.loadtxt(out, delimiter=",", skiprows=1)))
     # Paper frame (z down) to the elastica's (z up): the tip, and the cable's force on the base, which
-    # is F(0) (the base holds the cable with -F(0)).
+    # is F(0) (the base holds the cable with -F(0)), and on the load, -F(L).
     tip = np.array([row[f"end{links}_x"], -row[f"end{links}_z"]])
     base_force = np.array([row["base_force_x"], -row["base_force_z"]])
-    load_force = np.array([row["load_force_x"], -row["load_force_z"]])  # = -F(L)
+    load_force = np.array([row["load_force_x"], -row["load_force_z"]])
     return tip, base_force, load_force
 
 
-def elastica(tip, ei=EI):
-    """F(0) = (F_x, F_z0) of the pinned heavy elastica from (0, 0) to `tip` [m]."""
+def cable_config(links, ei=EI):
+    return (f"cable: {{links: {links}, length: {L}, diameter: {D}, mass_per_length: {MASS},\n"
+            f"        stiffness: {{model: bending, bending_rigidity: {ei}, torsional_rigidity: {max(ei, 1.0) / 2}}}}}\n"
+            f"fluid: {{density: 0.0}}\n")
+
+
+def model_statics(tmp_path, links, ei=EI):
+    return run_statics(tmp_path, f"beam_{links}_{ei}", links, cable_config(links, ei) +
+                       f"base: {{fixity: pinned}}\n"
+                       f"load: {{mode: anchored, motion: {{offset: [{OFFSET[0]}, {OFFSET[1]}, {OFFSET[2]}]}}, "
+                       f"coupling: {{stiffness: 1.0e7}}}}\n")
+
+
+def solve_elastica(tip, ei, ends):
+    """F(0) = (F_x, F_z0) of the heavy elastica from (0, 0) to `tip` [m]; `ends(ya, yb)` gives its two
+    end conditions besides the positions (zero moments when pinned, the angles when clamped)."""
     X, Z = tip
     s = np.linspace(0.0, L, 401)
     chord = np.hypot(X, Z)
@@ -68,11 +79,16 @@ def elastica(tip, ei=EI):
         return np.vstack([np.cos(theta), np.sin(theta), m / ei, -(np.cos(theta) * (fz0 + W * s) - np.sin(theta) * fx)])
 
     def bc(ya, yb, p):
-        return np.array([ya[0], ya[1], ya[3], yb[3], yb[0] - X, yb[1] - Z])
+        return np.concatenate([[ya[0], ya[1]], ends(ya, yb), [yb[0] - X, yb[1] - Z]])
 
     solution = solve_bvp(rhs, bc, s, y0, p=[W * L / 2.0, -W * L / 2.0], tol=1e-7, bc_tol=1e-9, max_nodes=100000)
     assert solution.success, solution.message
     return np.array(solution.p)
+
+
+def elastica(tip, ei=EI):
+    """The pinned heavy elastica: zero moment at both ends."""
+    return solve_elastica(tip, ei, lambda ya, yb: [ya[3], yb[3]])
 
 
 def test_pinned_stiff_cable_between_two_points_matches_the_heavy_elastica(tmp_path):
@@ -96,48 +112,18 @@ def test_pinned_stiff_cable_between_two_points_matches_the_heavy_elastica(tmp_pa
 
 
 def clamped_statics(tmp_path, links, base_direction, tip_direction):
-    config = tmp_path / f"clamped_{links}.yaml"
-    config.write_text(
-        f"cable: {{links: {links}, length: {L}, diameter: {D}, mass_per_length: {MASS},\n"
-        f"        stiffness: {{model: bending, bending_rigidity: {EI}, torsional_rigidity: {EI / 2}}}}}\n"
-        f"base: {{fixity: clamped, direction: [{base_direction[0]}, 0.0, {base_direction[1]}]}}\n"
-        f"load: {{mode: anchored, fixity: clamped, direction: [{tip_direction[0]}, 0.0, {tip_direction[1]}],\n"
-        f"        motion: {{offset: [{OFFSET[0]}, {OFFSET[1]}, {OFFSET[2]}]}}}}\n"
-        f"fluid: {{density: 0.0}}\n")
     # The default coupling (2e4 N/m: the anchor gives a few centimetres, and the elastica is solved to
     # the tip where it is): a 1e7 N/m spring on a clamped stiff cable conditions Newton badly (938
     # iterations against 7, measured).
-    out = tmp_path / f"clamped_{links}.csv"
-    done = subprocess.run([binary(), "--config", str(config), "--statics", "--output", str(out)], capture_output=True,
-                          text=True, timeout=120)
-    assert done.returncode == 0, done.stderr
-    header = out.read_text().splitlines()[0].split(",")
-    row = dict(zip(header, np.loadtxt(out, delimiter=",", skiprows=1)))
-    tip = np.array([row[f"end{links}_x"], -row[f"end{links}_z"]])
-    return tip, np.array([row["base_force_x"], -row["base_force_z"]]), np.array([row["load_force_x"], -row["load_force_z"]])
+    return run_statics(tmp_path, f"clamped_{links}", links, cable_config(links) +
+                       f"base: {{fixity: clamped, direction: [{base_direction[0]}, 0.0, {base_direction[1]}]}}\n"
+                       f"load: {{mode: anchored, fixity: clamped, direction: [{tip_direction[0]}, 0.0, {tip_direction[1]}],\n"
+                       f"        motion: {{offset: [{OFFSET[0]}, {OFFSET[1]}, {OFFSET[2]}]}}}}\n")
 
 
 def clamped_elastica(tip, theta_base, theta_tip):
-    """F(0) of the heavy elastica clamped at angles theta_base and theta_tip [rad] from the horizontal."""
-    X, Z = tip
-    s = np.linspace(0.0, L, 401)
-    chord = np.hypot(X, Z)
-    sag = np.sqrt(max(L * L - chord * chord, 0.0)) / 2.0
-    x0 = X * s / L
-    z0 = Z * s / L - 2.0 * sag * np.sin(np.pi * s / L)
-    theta0 = np.arctan2(np.gradient(z0, s), np.gradient(x0, s))
-    y0 = np.vstack([x0, z0, theta0, np.zeros_like(s)])
-
-    def rhs(s, y, p):
-        fx, fz0 = p
-        return np.vstack([np.cos(y[2]), np.sin(y[2]), y[3] / EI, -(np.cos(y[2]) * (fz0 + W * s) - np.sin(y[2]) * fx)])
-
-    def bc(ya, yb, p):
-        return np.array([ya[0], ya[1], ya[2] - theta_base, yb[2] - theta_tip, yb[0] - X, yb[1] - Z])
-
-    solution = solve_bvp(rhs, bc, s, y0, p=[W * L / 2.0, -W * L / 2.0], tol=1e-7, bc_tol=1e-9, max_nodes=100000)
-    assert solution.success, solution.message
-    return np.array(solution.p)
+    """The heavy elastica clamped at angles theta_base and theta_tip [rad] from the horizontal."""
+    return solve_elastica(tip, EI, lambda ya, yb: [ya[2] - theta_base, yb[2] - theta_tip])
 
 
 def test_clamped_stiff_cable_between_two_points_matches_the_clamped_heavy_elastica(tmp_path):

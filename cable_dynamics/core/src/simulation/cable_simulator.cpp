@@ -287,7 +287,11 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   const Eigen::Vector3d on_rov =
       params_.load.mode == LoadMode::kAttached ? Eigen::Vector3d(-out.chain.coupling_force) : out.chain.load_force;
   out.rov = wrenchAboutOrigin(paperToWorld(on_rov), out.rov_attitude, params_.load.attachment);
-  // A clamped tip also holds the last link with a torque: the ROV (or anchor) feels its opposite.
+  // A clamped base holds the base link with a torque, and a clamped tip the last link: the vessel and
+  // the ROV (or anchor) feel their opposites.
+  const Eigen::Vector3d base_clamp = -paperToWorld(dynamics_.data().clamp_torque);
+  out.vessel.moment_world += base_clamp;
+  out.vessel.moment_body += out.vessel_attitude.conjugate() * base_clamp;
   const Eigen::Vector3d tip_clamp = -paperToWorld(dynamics_.data().tip_clamp_torque);
   out.rov.moment_world += tip_clamp;
   out.rov.moment_body += out.rov_attitude.conjugate() * tip_clamp;
