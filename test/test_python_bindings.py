@@ -89,6 +89,29 @@ def test_hanging_chain_tension_is_the_submerged_weight_below():
     np.testing.assert_allclose(ends[:, :2], 0.0, atol=1e-9)
 
 
+# --- the seabed ------------------------------------------------------------------------------------
+
+def test_a_chain_on_the_seabed_rests_its_weight_on_it():
+    # The hanging chain (no load) anchored on a bottom 10 m down, 14 m out: at equilibrium its submerged
+    # weight (from the config's numbers) is carried by the base, the anchor and the bottom's normal
+    # forces, which the snapshot reports (paper frame, z down; the bottom pushes up, -z).
+    cfg = hanging_config(load_mass=0.0, load_volume=0.0)
+    cfg["load"].update({"mode": "anchored", "motion": {"offset": [14.0, 0.0, 10.0]}})  # from the tip 20 m down
+    cfg["seabed"] = {"depth": 10.0}
+    cfg["initial"] = {"mode": "equilibrium"}
+    sim = cable_dynamics.Simulator.from_dict(cfg)
+    s = sim.snapshot()
+    c = cfg["cable"]
+    weight = (c["mass_per_length"] - RHO * math.pi * (c["diameter"] / 2) ** 2) * c["length"] * G
+    assert s.seabed_force.shape == (10, 3)
+    np.testing.assert_allclose(-s.seabed_force[:, 2], s.seabed_normal, rtol=1e-12, atol=1e-12)  # no friction at rest
+    assert s.base_force[2] - s.coupling_force[2] + s.seabed_normal.sum() == pytest.approx(weight, rel=1e-6)
+    assert s.grounded_length > 1.0 and s.seabed_normal.sum() > 0.1 * weight
+    assert 10.0 < s.touchdown_arc_length < 20.0
+    assert 0.0 < s.max_penetration < 0.015  # half the diameter is allowed
+    assert s.contact_energy > 0.0
+
+
 # --- stepping: the compound pendulum ----------------------------------------------------------------
 
 def test_single_link_swings_with_the_compound_pendulum_period():

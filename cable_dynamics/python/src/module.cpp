@@ -68,7 +68,15 @@ PYBIND11_MODULE(cable_dynamics, m) {
       .def_readonly("total_energy", &Snapshot::total_energy, "the balance, constant up to the integrator [J]")
       .def_readonly("first_link", &Snapshot::first_link, "slots before it are on the winch's drum")
       .def_readonly("deployed_length", &Snapshot::deployed_length, "[m]")
-      .def_readonly("winch_speed", &Snapshot::winch_speed, "+ paying out [m/s]");
+      .def_readonly("winch_speed", &Snapshot::winch_speed, "+ paying out [m/s]")
+      .def_readonly("seabed_force", &Snapshot::seabed_force, "(n, 3) the bottom's force on each link [N] (empty without a seabed)")
+      .def_readonly("seabed_normal", &Snapshot::seabed_normal, "(n) its normal part [N]")
+      .def_readonly("grounded_length", &Snapshot::grounded_length, "cable length on the bottom [m]")
+      .def_readonly("touchdown_arc_length", &Snapshot::touchdown_arc_length,
+                    "from the base, where the cable first touches the bottom [m]; -1 while nothing touches")
+      .def_readonly("touchdown", &Snapshot::touchdown, "(3) that point [m]")
+      .def_readonly("max_penetration", &Snapshot::max_penetration, "deepest penetration into the bottom [m]")
+      .def_readonly("contact_energy", &Snapshot::contact_energy, "the bottom's contact springs [J]");
 
   py::class_<ModelTerms>(m, "Model", "M q'' + h + G + elastic + D q' = Q at one state (paper coordinates).")
       .def_readonly("coordinates", &ModelTerms::coordinates, "(3n) names, joint_K_elevation/azimuth/torsion")

@@ -87,6 +87,14 @@ Snapshot PythonSimulator::snapshot() {
   out.first_link = s.first_link;
   out.deployed_length = s.deployed_length;
   out.winch_speed = s.winch_speed;
+  const SeabedReport& bed = s.chain.seabed;
+  out.seabed_force = bed.link_force.transpose();
+  out.seabed_normal = bed.normal_force;
+  out.grounded_length = bed.grounded_length;
+  out.touchdown_arc_length = bed.touching ? bed.touchdown_arc_length : -1.0;
+  out.touchdown = bed.touchdown;
+  out.max_penetration = bed.max_penetration;
+  out.contact_energy = s.chain.contact_energy;
   return out;
 }
 

@@ -32,6 +32,14 @@ struct Snapshot {
   int first_link = 0;              ///< slots before it are on the winch's drum
   double deployed_length = 0.0;    ///< [m]
   double winch_speed = 0.0;        ///< + paying out [m/s]
+  // The seabed (zeros and empty arrays without one).
+  Eigen::MatrixX3d seabed_force;       ///< (n x 3) the bottom's force on each link, normal and friction [N]
+  Eigen::VectorXd seabed_normal;       ///< (n) its normal part's magnitude [N]
+  double grounded_length = 0.0;        ///< cable length in contact [m]
+  double touchdown_arc_length = -1.0;  ///< from the base, where it first touches [m]; -1 while nothing does
+  Eigen::Vector3d touchdown = Eigen::Vector3d::Zero();  ///< that point [m]
+  double max_penetration = 0.0;        ///< [m]
+  double contact_energy = 0.0;         ///< the contact springs' potential energy [J]
 };
 
 /// The paper model's terms at the present state (paperModelAt), sizes 3n and 3n x 3n.
