@@ -1,6 +1,8 @@
-# The Python module `cable_dynamics` (pybind11 from Debian: pybind11-dev). Included from the root
-# CMakeLists.txt. Built into the devel space's python directory, so `import cable_dynamics` works after
-# `source devel/setup.bash`, and installed into the install space's.
+# The Python package `cable_dynamics` (pybind11 from Debian: pybind11-dev). Included from the root
+# CMakeLists.txt. dynamic_reconfigure generates a Python package of the project's name (cable_dynamics.cfg,
+# with an empty __init__.py) in the devel space: the compiled module is `cable_dynamics._bindings` inside
+# it, and our __init__.py, copied over the empty one after the generation, re-exports it; so
+# `import cable_dynamics` works after `source devel/setup.bash`, and the same in the install space.
 # Debian's python3 (the one catkin was configured with), found with its development part before pybind11:
 # a package that catkin's components pull in (rosbag_storage) finds Python3 without it, and pybind11 then
 # picks its FindPython mode without python3_add_library.
@@ -15,7 +17,12 @@ pybind11_add_module(cable_dynamics_python MODULE
   ${CMAKE_CURRENT_LIST_DIR}/src/config_from_python.cpp
 )
 target_link_libraries(cable_dynamics_python PRIVATE cable_dynamics_core)
+set(CABLE_PYTHON_PACKAGE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_PYTHON_DESTINATION})
 set_target_properties(cable_dynamics_python PROPERTIES
-  OUTPUT_NAME cable_dynamics
-  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_PYTHON_DESTINATION})
-install(TARGETS cable_dynamics_python LIBRARY DESTINATION ${CATKIN_GLOBAL_PYTHON_DESTINATION})
+  OUTPUT_NAME _bindings
+  LIBRARY_OUTPUT_DIRECTORY ${CABLE_PYTHON_PACKAGE_DIR})
+add_dependencies(cable_dynamics_python ${PROJECT_NAME}_gencfg)
+add_custom_command(TARGET cable_dynamics_python POST_BUILD
+  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_CURRENT_LIST_DIR}/__init__.py ${CABLE_PYTHON_PACKAGE_DIR}/__init__.py)
+install(TARGETS cable_dynamics_python LIBRARY DESTINATION ${CATKIN_PACKAGE_PYTHON_DESTINATION})
+install(FILES ${CMAKE_CURRENT_LIST_DIR}/__init__.py DESTINATION ${CATKIN_PACKAGE_PYTHON_DESTINATION})

@@ -37,7 +37,7 @@ const Eigen::Vector4d kIdentity(0.0, 0.0, 0.0, 1.0);  // x, y, z, w
 }  // namespace python
 }  // namespace cable_dynamics
 
-PYBIND11_MODULE(cable_dynamics, m) {
+PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the package
   using namespace cable_dynamics;
   using namespace cable_dynamics::python;
   m.doc() =
