@@ -108,7 +108,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
   const int n = model.links(), first = model.firstLink();
   double dissipation = 0.0, arc_before = 0.0;
   const double shallowest = c.bed.shallowest();
-  const bool flat = c.bed.flat() && links != nullptr;
+  const bool flat_kernel = c.bed.flat() && report == nullptr;  // the hot path on a flat bed
   // The report's touchdown: where the signed penetration first crosses zero from the base, linear
   // between the contact point before (or the base end) and the first one in the bed.
   double previous_arc = 0.0, previous_penetration = -std::numeric_limits<double>::infinity();
@@ -129,7 +129,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
       const double share = l / c.points;
       const Vec3 base = block.base_pos[i], velocity = block.base_vel[i], axis = block.u[i], rate = block.axis_rate[i];
       Vec3 force{0.0, 0.0, 0.0}, moment{0.0, 0.0, 0.0};
-      if (flat && !report) {
+      if (flat_kernel) {
         dissipation += flatLinkContact(c, l, c.damping[k], base, velocity, axis, rate, force, moment);
         LinkBlock& target = links->block(b);
         target.force.set(i, target.force[i] + force);
@@ -201,9 +201,15 @@ CABLE_HOT_PATH void addSeabedContact(const ChainModel& model, ChainData& data) {
 
 void reportSeabedContact(const ChainModel& model, const ChainData& data, SeabedReport& report) {
   const int n = model.links();
-  report = SeabedReport{};
+  // Reset in place: the arrays keep their storage from the last report (one allocation, at the first).
   report.link_force.setZero(3, n);
   report.normal_force.setZero(n);
+  report.load_force.setZero();
+  report.grounded_length = 0.0;
+  report.touching = false;
+  report.touchdown_arc_length = 0.0;
+  report.touchdown.setZero();
+  report.max_penetration = 0.0;
   contactPass(model, data, nullptr, nullptr, &report);
   report.energy = seabedContactEnergy(model, data);
 }
