@@ -131,12 +131,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   // G = l F_outboard + (the link's own first moment), turns with the link: dtau = -(G.u) P dtheta - ...;
   // the symmetric, restoring part (G.u) P is kept, in tension only. With the joint forces of a solve,
   // G.u = l (T_k + T_{k+1}) / 2, the mean tension along the link times its length.
-  if (use_last_tension) {
-    for (int k = first; k < n; ++k) {
-      const double far = k + 1 < n ? links_[k + 1].tension : tip_tension_;
-      links_[k].geometric = std::max(0.0, 0.5 * model.get(&LinkConstants::length, k) * (links_[k].tension + far));
-    }
-  }
+  if (use_last_tension) geometricFromLastTension(model);
   Eigen::Vector3d outboard = data.load_external;
   for (int k = n - 1; k >= first && !use_last_tension; --k) {
     StiffLinkTerms& t = links_[k];
@@ -157,6 +152,13 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   }
   coupling_stiffness_ = ends.load_coupled ? load.coupling_stiffness : 0.0;
   coupling_damping_ = ends.load_coupled ? load.coupling_damping : 0.0;
+}
+
+void StiffArticulatedBody::geometricFromLastTension(const ChainModel& model) {
+  for (int k = model.firstLink(); k < model.links(); ++k) {
+    const double far = k + 1 < model.links() ? links_[k + 1].tension : tip_tension_;
+    links_[k].geometric = std::max(0.0, 0.5 * model.get(&LinkConstants::length, k) * (links_[k].tension + far));
+  }
 }
 
 void StiffArticulatedBody::clearExtra() {

@@ -356,7 +356,7 @@ CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   p.simulation.integrator = integrator == "rk4"             ? Integrator::kRk4
                             : integrator == "semi_implicit" ? Integrator::kSemiImplicit
                                                             : Integrator::kImplicit;
-  p.simulation.rho_infinity = simulation.number("rho_infinity", 1.0, 0.0, 1.0, false, "");
+  p.simulation.rho_infinity = simulation.number("rho_infinity", 0.9, 0.0, 1.0, false, "");
   p.simulation.duration = simulation.number("duration", 10.0, 0.0, 1e7, true, "s");
   p.simulation.formulation = simulation.choice("formulation", "recursive", {"paper", "recursive"}) == "recursive"
                                  ? Formulation::kRecursive

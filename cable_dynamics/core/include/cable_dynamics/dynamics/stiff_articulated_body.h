@@ -66,6 +66,10 @@ class StiffArticulatedBody {
   /// would hold statically.
   void linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends, bool use_last_tension = false);
 
+  /// The geometric stiffness alone, from the tensions of the last solve() (as linearize() with
+  /// `use_last_tension`): the other terms are kept.
+  void geometricFromLastTension(const ChainModel& model);
+
   /// Sets the extra right-hand side to zero.
   void clearExtra();
   /// Adds stiffness_factor K r + damping_factor D r to the right-hand side, as generalized forces:

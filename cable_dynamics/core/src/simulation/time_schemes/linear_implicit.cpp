@@ -3,9 +3,6 @@
 #include <cassert>
 #include <cmath>
 
-#include <Eigen/Geometry>
-#include <Eigen/LU>
-
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/joint_torques.h"
 
@@ -29,59 +26,39 @@ inline Eigen::Vector3d turned(const Eigen::Vector3d& u, const Eigen::Vector3d& t
   return c * u + s * k.cross(u) + ((1.0 - c) * k.dot(u)) * k;
 }
 
-}  // namespace
-
-LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity)
-    : theta_(1.0 / (1.0 + rho_infinity)), solver_(links) {
-  predicted_.setZero(StateLayout::size(links));
-  for (Eigen::Matrix3Xd* m : {&omega_, &rotation_, &translation_}) m->setZero(3, links);
+/// The frame of a link (axis u, twist sigma) turned by the rotation vector phi [rad]: the axis exactly,
+/// the twist by sigma' integrated along the turn with the midpoint rule (O(|phi|^3)).
+inline void turnFrame(Eigen::VectorXd& x, int k, const Eigen::Vector3d& phi) {
+  const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k));
+  x(StateLayout::twist(k)) += twistRate(phi, turned(axis, 0.5 * phi));
+  x.segment<3>(StateLayout::axis(k)) = turned(axis, phi);
 }
 
-bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,
-                                   Eigen::VectorXd& x) {
-  assert(x.size() == f.stateSize());
-  if (!x.allFinite()) return false;
-  const ChainModel& model = f.model();
-  const ChainData& data = f.data();
-  const int n = f.links(), first = model.firstLink();
-  const double th = theta_ * h;
-  // Predictor: backward Euler over theta h from x_n, linearized: (M + th D + th^2 K) a_p = g(x_n) - th K w_n.
-  const EndInputs start = end_conditions.at(t);
-  f.computeLoads(x, start);
-  // The predictor only has to be consistent (x_p is then O(h^2) from the evaluation point whatever its
-  // Jacobian): it reuses the last corrector's, linearized O(h) away, and saves a linearization a step.
-  if (!tensions_known_) solver_.linearize(model, data, start, false);
-  solver_.clearExtra();
-  for (int k = first; k < n; ++k) omega_.col(k) = x.segment<3>(StateLayout::omega(k));
-  translation_.setZero();  // K reads rotations only
-  const Eigen::Vector3d tip_rate =
-      start.load_coupled ? Eigen::Vector3d(data.tip_velocity - start.target_velocity) : Eigen::Vector3d::Zero();
-  solver_.addJacobianTimes(model, -th, 0.0, omega_, data.clamp_omega, translation_, tip_rate);
-  solver_.solve(model, data, th, th * th);
-  predicted_ = x;
-  for (int k = first; k < n; ++k) {
-    const StiffLinkTerms& terms = solver_.link(k);
-    const Eigen::Vector3d change = th * terms.angular_acc;  // dw_p
-    rotation_.col(k) = change;
-    translation_.col(k) = th * terms.delta_acc;  // the base end's velocity change
-    const Eigen::Vector3d omega = omega_.col(k) + change;
-    const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k));
-    predicted_.segment<3>(StateLayout::axis(k)) = turned(axis, th * omega);
-    predicted_(StateLayout::twist(k)) += th * twistRate(omega, axis);
-    predicted_.segment<3>(StateLayout::omega(k)) = omega;
-  }
-  const Eigen::Vector3d tip_change = th * solver_.tipDelta();
-  if (!predicted_.allFinite()) return false;
-  // Corrector about x_p: (M + th D + th^2 K) a = g(x_p) + (D + th K) dw_p, dw = h a.
-  const EndInputs middle = end_conditions.at(t + th);
-  f.computeLoads(predicted_, middle);
-  solver_.linearize(model, data, middle, true);  // the predictor's tensions
-  tensions_known_ = true;
-  solver_.clearExtra();
-  solver_.addJacobianTimes(model, th, 1.0, rotation_, Eigen::Vector3d::Zero(), translation_, tip_change);
-  solver_.solve(model, data, th, th * th);
-  // The powers at the evaluation point: drag, dampers, added mass (with the solved accelerations), and
-  // what the base, the coupling and a turning clamp put in.
+}  // namespace
+
+double LinearImplicitScheme::gammaFor(double rho_infinity) {
+  // R(inf) = 1 - 2/gamma + 1/(2 gamma^2) = -rho_inf: (1 + rho) gamma^2 - 2 gamma + 1/2 = 0, the smaller
+  // root (the smaller error constant): rho = 0 gives 1 - 1/sqrt(2), rho = 1 gives 1/2.
+  return (1.0 - std::sqrt(0.5 * (1.0 - rho_infinity))) / (1.0 + rho_infinity);
+}
+
+std::complex<double> LinearImplicitScheme::amplification(double rho_infinity, std::complex<double> z) {
+  const double g = gammaFor(rho_infinity);
+  const std::complex<double> denominator = (1.0 - g * z) * (1.0 - g * z);
+  return (1.0 + (1.0 - 2.0 * g) * z + (g * g - 2.0 * g + 0.5) * z * z) / denominator;
+}
+
+LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity)
+    : gamma_(gammaFor(rho_infinity)), solver_(links) {
+  stage_.setZero(StateLayout::size(links));
+  for (Eigen::Matrix3Xd* m : {&omega_, &turn1_, &spin1_, &shift1_, &push1_, &rotation_, &translation_}) m->setZero(3, links);
+}
+
+LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainModel& model, const ChainData& data) const {
+  // The powers at a stage's state, with its solved accelerations: drag, dampers and added mass taken out;
+  // what the base, the coupling and a turning clamp put in. Affine in the accelerations, so the mean of
+  // the two stages' is the step's to second order.
+  const int n = model.links(), first = model.firstLink();
   double added_power = 0.0;
   for (int k = first; k < n; ++k) {
     const LinkConstants& c = model.of(k);
@@ -95,22 +72,99 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   }
   const Eigen::Vector3d tip_acc = data.tip_known_acc + solver_.tipDelta();
   added_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);
-  const double damping_power = damperPower(model, data);
   const Eigen::Vector3d exit_velocity = data.links.get(&LinkBlock::base_vel, first);
   const double input_power = solver_.baseForce().dot(exit_velocity) + data.coupling.dot(data.tip_velocity) +
                              data.clamp_torque.dot(data.clamp_omega);
-  for (int k = first; k < n; ++k) {
-    const Eigen::Vector3d change = h * solver_.link(k).angular_acc;
-    const Eigen::Vector3d omega = omega_.col(k);
-    const Eigen::Vector3d evaluated = omega + theta_ * change;  // w at the evaluation point
-    const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k));
-    x.segment<3>(StateLayout::axis(k)) = turned(axis, h * evaluated);
-    // sigma' at the evaluation point, with x_p's axis (O(h^2) from it: second order still).
-    x(StateLayout::twist(k)) += h * twistRate(evaluated, predicted_.segment<3>(StateLayout::axis(k)));
-    x.segment<3>(StateLayout::omega(k)) = omega + change;
+  return {input_power, data.drag_power + added_power + damperPower(model, data)};
+}
+
+bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,
+                                   Eigen::VectorXd& x) {
+  assert(x.size() == f.stateSize());
+  if (!x.allFinite()) return false;
+  const ChainModel& model = f.model();
+  const ChainData& data = f.data();
+  const int n = f.links(), first = model.firstLink();
+  const double g = gamma_, gh = gamma_ * h;
+  // The state is (phi, w): the links' rotation vectors from x_n's frames and their angular velocities;
+  // the matrix of both stages is W = M + g h D + g^2 h^2 K (one recursion each), with K, D the Jacobians
+  // of the generalized forces in the rotations and the velocities (stiff_articulated_body.h).
+  //
+  // Stage 1 at x_n: (I - g h A) k1 = h F(x_n) reads W a1 = G(x_n) - g h K w_n, with k1 = (kphi1, kw1),
+  // kw1 = h a1, kphi1 = h (w_n + g kw1).
+  const EndInputs start = end_conditions.at(t);
+  f.computeLoads(x, start);
+  // W may be any approximation (a W-method keeps its order whatever the Jacobian): stage 1 reuses the last
+  // step's stage-2 terms, linearized O(h) away, and saves a linearization a step. Its geometric stiffness
+  // is refreshed from the stage-2 solve's tensions, though: left at stage 1's (whose right-hand side
+  // carries -g h K w_n), an undamped stiff tether in air gained energy and diverged at rho_inf = 1
+  // (docs/MODEL.md section 6).
+  if (!tensions_known_) {
+    solver_.linearize(model, data, start, false);
+  } else {
+    solver_.geometricFromLastTension(model);
   }
-  x(StateLayout::dissipated(n)) -= h * (data.drag_power + added_power + damping_power);
-  x(StateLayout::workInput(n)) += h * input_power;
+  solver_.clearExtra();
+  for (int k = first; k < n; ++k) {
+    omega_.col(k) = x.segment<3>(StateLayout::omega(k));
+    translation_.col(k) = data.links.get(&LinkBlock::base_vel, k);
+  }
+  const Eigen::Vector3d clamp_rate = data.clamp_omega;
+  const Eigen::Vector3d tip_rate1 =
+      start.load_coupled ? Eigen::Vector3d(data.tip_velocity - start.target_velocity) : Eigen::Vector3d::Zero();
+  solver_.addJacobianTimes(model, -gh, 0.0, omega_, clamp_rate, translation_, tip_rate1);
+  solver_.solve(model, data, gh, gh * gh);
+  const StagePower power1 = stagePower(model, data);
+  stage_ = x;
+  for (int k = first; k < n; ++k) {
+    const StiffLinkTerms& terms = solver_.link(k);
+    spin1_.col(k) = h * terms.angular_acc;  // kw1 [rad/s]
+    push1_.col(k) = h * terms.delta_acc;    // the base end's velocity change [m/s]
+    turn1_.col(k) = h * (omega_.col(k) + g * spin1_.col(k));  // kphi1 [rad]
+    shift1_.col(k) = h * (translation_.col(k) + g * push1_.col(k));  // the base end's displacement [m]
+    turnFrame(stage_, k, turn1_.col(k));
+    stage_.segment<3>(StateLayout::omega(k)) = omega_.col(k) + spin1_.col(k);
+  }
+  const Eigen::Vector3d tip_push1 = h * solver_.tipDelta();
+  const Eigen::Vector3d tip_shift1 = h * tip_rate1 + g * h * tip_push1;
+  if (!stage_.allFinite()) return false;
+  // Stage 2 at x_n + k1 (time t + h), written for k~2 = k2 + 2 k1 so that no mass-matrix product appears:
+  // (I - g h A) k~2 = h F(x_n + k1) - 2 g h A k1, i.e. W a2 = G(x_n + k1) + g K (2 kphi1 - rphi2) + 2 g D kw1,
+  // with rphi2 = h dexp^-1(kphi1) w_1 - 2 g h kw1, kw~2 = h a2, kphi~2 = rphi2 + g h kw~2.
+  // The step: x_{n+1} = x_n + (k1 + k~2) / 2.
+  const EndInputs end = end_conditions.at(t + h);
+  f.computeLoads(stage_, end);
+  solver_.linearize(model, data, end, true);  // stage 1's tensions
+  tensions_known_ = true;
+  solver_.clearExtra();
+  for (int k = first; k < n; ++k) {
+    const Eigen::Vector3d w1 = stage_.segment<3>(StateLayout::omega(k));
+    const Eigen::Vector3d turn = turn1_.col(k);
+    // dexp^-1 to first order (the next term is O(h^2) in it): the rate of phi is w - phi x w / 2.
+    const Eigen::Vector3d rate = h * (w1 - 0.5 * turn.cross(w1)) - 2.0 * g * h * spin1_.col(k);
+    omega_.col(k) = rate;  // rphi2, kept for the update
+    rotation_.col(k) = 2.0 * turn - rate;
+    const Eigen::Vector3d rate_base = h * data.links.get(&LinkBlock::base_vel, k) - 2.0 * g * h * push1_.col(k);
+    translation_.col(k) = 2.0 * shift1_.col(k) - rate_base;
+  }
+  const Eigen::Vector3d clamp2 = 2.0 * h * clamp_rate - h * data.clamp_omega;
+  const Eigen::Vector3d tip_rate2 =
+      end.load_coupled ? Eigen::Vector3d(h * (data.tip_velocity - end.target_velocity) - 2.0 * g * h * tip_push1)
+                       : Eigen::Vector3d::Zero();
+  solver_.addJacobianTimes(model, g, 0.0, rotation_, clamp2, translation_, 2.0 * tip_shift1 - tip_rate2);
+  solver_.addJacobianTimes(model, 0.0, 2.0 * g, spin1_, Eigen::Vector3d::Zero(), push1_, tip_push1);
+  solver_.solve(model, data, gh, gh * gh);
+  const StagePower power2 = stagePower(model, data);
+  for (int k = first; k < n; ++k) {
+    const Eigen::Vector3d spin2 = h * solver_.link(k).angular_acc;
+    const Eigen::Vector3d turn2 = omega_.col(k) + gh * spin2;
+    const Eigen::Vector3d omega = x.segment<3>(StateLayout::omega(k));
+    turnFrame(x, k, 0.5 * (turn1_.col(k) + turn2));
+    x.segment<3>(StateLayout::omega(k)) = omega + 0.5 * (spin1_.col(k) + spin2);
+  }
+  // The power balance: inputs into work_input, losses into dissipated, each the stages' mean.
+  x(StateLayout::workInput(n)) += 0.5 * h * (power1.input + power2.input);
+  x(StateLayout::dissipated(n)) -= 0.5 * h * (power1.dissipative + power2.dissipative);
   return x.allFinite();
 }
 

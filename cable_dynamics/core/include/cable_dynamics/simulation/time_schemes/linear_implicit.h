@@ -1,8 +1,10 @@
 #pragma once
 /// \file
-/// \brief The linearly implicit theta step in O(n): predictor and corrector, each one pass of the
-///        articulated-body recursion with the stiff terms folded into its inertias
-///        (stiff_articulated_body.h; docs/MODEL.md section 6, "Implicit integrator").
+/// \brief The linearly implicit step in O(n): a two-stage Rosenbrock-W method (ROS2 with a controllable
+///        spectral radius), each stage one pass of the articulated-body recursion with the stiff terms
+///        folded into its inertias (stiff_articulated_body.h; docs/MODEL.md section 6, "Implicit integrator").
+
+#include <complex>
 
 #include <Eigen/Core>
 
@@ -11,40 +13,53 @@
 
 namespace cable_dynamics {
 
-/// The theta method y_{n+1} = y_n + h f(y_n + theta (y_{n+1} - y_n)) on the angular velocities w and
-/// the rotations, linearized in two stages that both solve (M + theta h D + theta^2 h^2 K) a = rhs by one
-/// O(n) recursion (K, D: the Jacobians of stiff_articulated_body.h):
-/// - predictor, a linearized backward-Euler step of theta h from x_n (with the previous corrector's K and D):
-///   a_p from rhs = g(x_n) - theta h K w_n,
-///   dw_p = theta h a_p, w_p = w_n + dw_p, axes turned by theta h w_p: x_p, an O(h^2) estimate of the
-///   state at the evaluation point;
-/// - corrector, the theta step linearized about x_p: rhs = g(x_p) + (D + theta h K) dw_p, dw = h a,
-///   w_{n+1} = w_n + dw, the axes turned by h (w_n + theta dw).
-/// theta = 1 / (1 + rho_inf): rho_inf = 1 is the implicit midpoint rule (second order, no numerical
-/// damping, A-stable; for a linear system the linearization is exact and it is the trapezoidal rule),
-/// rho_inf < 1 damps the highest modes to rho_inf per step (first order), rho_inf = 0 is backward Euler.
-/// Because x_p is O(h^2) from the evaluation point, forces left out of K and D (or approximated there)
-/// cost no order. Cost: two evaluations of the loads and two recursions per step; no heap allocation.
+/// ROS2 (Verwer, Spee, Blom and Hundsdorfer, SIAM J. Sci. Comput. 20, 1999) on the links' rotations and
+/// angular velocities y = (phi, w), with the matrix W = I - gamma h A and A the Jacobian of
+/// stiff_articulated_body.h (joint springs and dampers, drag, geometric stiffness, the load's coupling):
+///   (I - gamma h A) k1 = h F(y_n),
+///   (I - gamma h A) k2 = h F(y_n + k1) - 2 k1,   y_{n+1} = y_n + 3/2 k1 + 1/2 k2.
+/// Both stages solve (M + gamma h D + gamma^2 h^2 K) a = rhs by one O(n) recursion; the rotations live on
+/// the links' frames (phi from x_n's, turned exactly). Properties that made it the choice:
+/// - second order for any A (a W-method): the approximate bending Jacobian, the tension stiffness read from
+///   the last solve and the Jacobian reused from the last step's second stage cost no order;
+/// - A-stable, with R(inf) = -rho_inf through gamma = (1 - sqrt((1 - rho_inf) / 2)) / (1 + rho_inf):
+///   rho_inf = 0 (gamma = 1 - 1/sqrt 2) is L-stable, rho_inf = 1 (gamma = 1/2) is the trapezoidal rule on
+///   linear problems, which damps nothing and which a stiff, undamped nonlinear cable can drive unstable.
+/// Cost: two evaluations of the loads, one linearization and two recursions per step; no heap allocation.
 class LinearImplicitScheme : public TimeScheme {
  public:
   LinearImplicitScheme(int links, double rho_infinity);
 
   bool advance(ChainDynamics& dynamics, const EndConditions& ends, double t, double h, Eigen::VectorXd& x) override;
-  /// Its power terms are integrated at the evaluation point (second order at rho_inf = 1), but a step's
-  /// balance is not closed to the scheme's order under strong nonlinearity: not judged per step.
+  /// Its power terms are the two stages' mean (second order), but a step's balance is not closed to the
+  /// scheme's order under strong nonlinearity: not judged per step.
   bool balancesEnergy() const override { return false; }
 
-  double theta() const { return theta_; }
-  /// The next predictor linearizes afresh (its geometric stiffness from the external loads) instead of
-  /// reusing the last corrector's Jacobians (a reset or a changed input).
+  /// The stages' gamma for a spectral radius at infinity rho_inf in [0, 1].
+  static double gammaFor(double rho_infinity);
+  /// The step's amplification y_{n+1} / y_n for y' = lambda y, z = h lambda (exact A):
+  /// R(z) = (1 + (1 - 2 gamma) z + (gamma^2 - 2 gamma + 1/2) z^2) / (1 - gamma z)^2.
+  static std::complex<double> amplification(double rho_infinity, std::complex<double> z);
+  double gamma() const { return gamma_; }
+  /// The next first stage linearizes afresh (its geometric stiffness from the external loads) instead of
+  /// reusing the last second stage's Jacobians (a reset or a changed input).
   void forget() override { tensions_known_ = false; }
 
  private:
-  double theta_;
-  bool tensions_known_ = false;  ///< the solver holds the previous step's corrector's Jacobians and tensions
+  /// A stage's powers [W]: what the base, the coupling and a turning clamp put in, and the power of the
+  /// drag, added-mass and damper forces (negative when they take energy out).
+  struct StagePower {
+    double input, dissipative;
+  };
+  StagePower stagePower(const ChainModel& model, const ChainData& data) const;
+
+  double gamma_;
+  bool tensions_known_ = false;  ///< the solver holds the previous step's second stage's Jacobians and tensions
   StiffArticulatedBody solver_;
-  Eigen::VectorXd predicted_;                          ///< x_p (state size)
-  Eigen::Matrix3Xd omega_, rotation_, translation_;    ///< (3 x n) scratch [rad/s], [rad/s], [m/s]
+  Eigen::VectorXd stage_;  ///< x_n + k1 (state size)
+  // (3 x n) per link: w_n, then stage 2's rphi [rad/s, then rad]; stage 1's kphi1 [rad], kw1 [rad/s], the base
+  // end's displacement [m] and velocity change [m/s]; the stage-2 right-hand side's rotations and translations.
+  Eigen::Matrix3Xd omega_, turn1_, spin1_, shift1_, push1_, rotation_, translation_;
 };
 
 }  // namespace cable_dynamics
