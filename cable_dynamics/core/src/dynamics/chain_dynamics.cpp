@@ -32,9 +32,8 @@ CABLE_HOT_PATH bool finiteAngularAccelerations(const LinkBlocks& links, int firs
   return std::isfinite(total);
 }
 
-/// The energy the winch pays out with the cable per metre [J/m]: kinetic energy per length of the
-/// material at the base end (translation, and the rotation of the section) plus its potential energy
-/// there. The deployed cable's energy grows by this times the pay-out speed, besides the work done on it.
+}  // namespace
+
 double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, const Vec3& exit_velocity) {
   const int first = model.firstLink();
   const LinkConstants& c = model.of(first);
@@ -49,7 +48,6 @@ double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, co
   return kinetic + potential;
 }
 
-}  // namespace
 
 ChainDynamics::ChainDynamics(const CableParams& params) : model_(params), data_(model_) {
   data_.current = CurrentField(params.fluid);

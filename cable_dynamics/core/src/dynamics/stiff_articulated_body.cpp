@@ -150,6 +150,13 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
     load_drag_ = (k * speed) * Eigen::Matrix3d::Identity();
     if (speed > 1e-12) load_drag_ += (k / speed) * relative * relative.transpose();
   }
+  // A clamped tip (joint_torques.cpp): bend only, across the mean of the last axis and the clamp's.
+  if (p.tip_clamp_stiffness > 0.0 || p.tip_clamp_damping > 0.0) {
+    const Eigen::Vector3d sum = blocks.get(&LinkBlock::u, n - 1) + data.tip_clamp_axis;
+    const Eigen::Vector3d mean = sum.norm() > 1e-9 ? Eigen::Vector3d(sum.normalized()) : data.tip_clamp_axis;
+    tip_clamp_stiffness_ = jointBlock(p.tip_clamp_stiffness, 0.0, mean);
+    tip_clamp_damping_ = jointBlock(p.tip_clamp_damping, 0.0, mean);
+  }
   coupling_stiffness_ = ends.load_coupled ? load.coupling_stiffness : 0.0;
   coupling_damping_ = ends.load_coupled ? load.coupling_damping : 0.0;
 }
@@ -171,7 +178,7 @@ void StiffArticulatedBody::clearExtra() {
 
 CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
                                             const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
-                                            const Eigen::Matrix3Xd& translation,
+                                            const Eigen::Vector3d& tip_rotation, const Eigen::Matrix3Xd& translation,
                                             const Eigen::Vector3d& tip_translation) {
   const int n = model.links(), first = model.firstLink();
   for (int k = first; k < n; ++k) {
@@ -190,6 +197,10 @@ CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& mod
     t.extra_force += damping_factor * (t.drag_rv.transpose() * r + t.drag_vv * v);
     t.extra_torque += (stiffness_factor * t.geometric) * (r - r.dot(t.axis) * t.axis);  // (G.u) P r
   }
+  // The tip clamp: its spring on the last link's rotation relative to the clamp, -K (r - r_clamp).
+  const Eigen::Vector3d tip_relative = rotation.col(n - 1) - tip_rotation;
+  links_[n - 1].extra_torque +=
+      stiffness_factor * (tip_clamp_stiffness_ * tip_relative) + damping_factor * (tip_clamp_damping_ * tip_relative);
   load_extra_ += (stiffness_factor * coupling_stiffness_ + damping_factor * coupling_damping_) * tip_translation +
                  damping_factor * (load_drag_ * tip_translation);
 }
@@ -231,6 +242,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     t.own_vr = own_rv.transpose();
     t.own_vv = c.translational[i] * identity - la * uu + cd * t.drag_vv;
     a_rr += (c.own_transverse[i] + ck * t.geometric) * P + c.polar[i] * uu + cd * t.drag_rr;
+    if (k == n - 1) a_rr += ck * tip_clamp_stiffness_ + cd * tip_clamp_damping_;  // zero unless clamped
     a_rv += own_rv;
     a_vv += t.own_vv;
     // Its bias, as the ordinary recursion has it (articulated_body.cpp, linkTermsPass), less the extra

@@ -292,8 +292,8 @@ void parseWinch(Section winch, CableParams& p) {
   if (p.simulation.formulation != Formulation::kRecursive) {
     throw ConfigError("simulation.formulation", "paper", "recursive with a winch");
   }
-  if (p.simulation.integrator != Integrator::kRk4) {
-    throw ConfigError("simulation.integrator", integratorName(p.simulation.integrator), "rk4 with a winch");
+  if (p.simulation.integrator == Integrator::kSemiImplicit) {
+    throw ConfigError("simulation.integrator", integratorName(p.simulation.integrator), "rk4 or implicit with a winch");
   }
   if (p.stiffness.model == StiffnessModel::kPaper && (p.stiffness.elevation > 0.0 || p.damping.elevation > 0.0)) {
     throw ConfigError("cable.stiffness.model", "paper", "bending when a winch pays out a cable with springs or dampers");
@@ -364,14 +364,11 @@ CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   simulation.rejectUnknownKeys();
   if (top.has("winch")) parseWinch(top.sub("winch"), p);
   top.rejectUnknownKeys();
-  // The implicit step folds the joints' springs, the drag and the coupling into its recursion; the
-  // seabed's contact and a clamped tip's spring are not in it yet, and explicit at its 10 ms steps they
-  // would be unstable: refused rather than run wrong.
+  // The implicit step folds the joints' and a clamped tip's springs, the drag and the coupling into its
+  // recursion; the seabed's contact is not in it yet, and explicit at its 10 ms steps it would be
+  // unstable: refused rather than run wrong.
   if (p.simulation.integrator == Integrator::kImplicit && p.seabed.enabled) {
     throw ConfigError("simulation.integrator", "implicit", "rk4 or semi_implicit with a seabed (its contact is not in the implicit step yet)");
-  }
-  if (p.simulation.integrator == Integrator::kImplicit && p.load.fixity == TipFixity::kClamped) {
-    throw ConfigError("simulation.integrator", "implicit", "rk4 or semi_implicit with load.fixity: clamped (the tip clamp is not in the implicit step yet)");
   }
   if (p.load.fixity == TipFixity::kClamped && p.stiffness.model != StiffnessModel::kBending) {
     throw ConfigError("load.fixity", "clamped", "pinned with cable.stiffness.model: paper; use model: bending");

@@ -42,6 +42,12 @@ struct ChainOutputs {
 };
 
 /// The model of one cable and the workspace its evaluations write.
+/// The energy a winch pays out with the cable per metre [J/m]: kinetic energy per length of the material
+/// at the base end (translation, and the rotation of the section) plus its potential energy there, at
+/// the exit velocity `exit_velocity` [m/s]. The deployed cable's energy grows by this times the pay-out
+/// speed, besides the work done on it (both integrators' power balance add it).
+double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, const Vec3& exit_velocity);
+
 class ChainDynamics {
  public:
   explicit ChainDynamics(const CableParams& params);

@@ -13,7 +13,10 @@
 ///        - link k's geometric stiffness from the tension: the moment of the outboard loads about the
 ///          base end turns with the link, K_g = (G . u) (I - u u^T), G = l F_outboard + first moment of
 ///          the link's own loads (gravity's stiffness of a hanging chain exactly; clipped at 0 in compression);
-///        - the load's drag Jacobian and its PD coupling (k_c, c_c) added to the load's mass.
+///        - the load's drag Jacobian and its PD coupling (k_c, c_c) added to the load's mass;
+///        - a clamped tip's bend spring and damper: 3x3 blocks k (I - m m^T), c (I - m m^T) on the last
+///          link's rotation relative to the clamp (m: the mean of its axis and the clamp's; no twist: a
+///          swivel), added to that link's rotational inertia.
 ///
 /// Unlike articulated_body.cpp, whose joints pass no torque (so spin and the two transverse directions
 /// separate, and 3x3 blocks suffice), here each joint passes a torque through its impedance, so the
@@ -74,11 +77,13 @@ class StiffArticulatedBody {
   void clearExtra();
   /// Adds stiffness_factor K r + damping_factor D r to the right-hand side, as generalized forces:
   /// r is a rotation (or rotation rate) of each link, `rotation` (3 x n) [rad or rad/s], with
-  /// `base_rotation` the clamp's (the joint springs act on the difference), a translation of each base
-  /// end `translation` (3 x n) (the drag's damping reads it) and of the tip, `tip_translation`.
+  /// `base_rotation` the base clamp's and `tip_rotation` a clamped tip's (the springs act on the
+  /// differences), a translation of each base end `translation` (3 x n) (the drag's damping reads it) and
+  /// of the tip, `tip_translation`.
   void addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
                         const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
-                        const Eigen::Matrix3Xd& translation, const Eigen::Vector3d& tip_translation);
+                        const Eigen::Vector3d& tip_rotation, const Eigen::Matrix3Xd& translation,
+                        const Eigen::Vector3d& tip_translation);
 
   /// Solves (M + damping_weight D + stiffness_weight K) omega' = rhs + extra at the state of `data`
   /// (rhs: everything computeLoads() put there, as the ordinary recursion reads it). Results in
@@ -96,6 +101,8 @@ class StiffArticulatedBody {
   Eigen::Matrix3d load_drag_ = Eigen::Matrix3d::Zero();  ///< load drag's damping [N s/m]
   double coupling_stiffness_ = 0.0, coupling_damping_ = 0.0;  ///< of the PD coupling, when coupled
   Eigen::Vector3d load_extra_ = Eigen::Vector3d::Zero();  ///< extra force on the load [N]
+  /// A clamped tip's blocks on the last link's rotation relative to the clamp [N m/rad], [N m s/rad].
+  Eigen::Matrix3d tip_clamp_stiffness_ = Eigen::Matrix3d::Zero(), tip_clamp_damping_ = Eigen::Matrix3d::Zero();
   Eigen::Vector3d tip_delta_ = Eigen::Vector3d::Zero(), base_force_ = Eigen::Vector3d::Zero();
   double tip_tension_ = 0.0;  ///< the load's pull along the last link [N]
   int points_ = 0;

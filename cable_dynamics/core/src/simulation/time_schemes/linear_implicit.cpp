@@ -3,6 +3,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "cable_dynamics/dynamics/chain_dynamics.h"
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/joint_torques.h"
 
@@ -54,7 +55,8 @@ LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity)
   for (Eigen::Matrix3Xd* m : {&omega_, &turn1_, &spin1_, &shift1_, &push1_, &rotation_, &translation_}) m->setZero(3, links);
 }
 
-LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainModel& model, const ChainData& data) const {
+LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainModel& model, const ChainData& data,
+                                                                  const EndInputs& ends) const {
   // The powers at a stage's state, with its solved accelerations: drag, dampers and added mass taken out;
   // what the base, the coupling and a turning clamp put in. Affine in the accelerations, so the mean of
   // the two stages' is the step's to second order.
@@ -73,8 +75,9 @@ LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainMod
   const Eigen::Vector3d tip_acc = data.tip_known_acc + solver_.tipDelta();
   added_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);
   const Eigen::Vector3d exit_velocity = data.links.get(&LinkBlock::base_vel, first);
-  const double input_power = solver_.baseForce().dot(exit_velocity) + data.coupling.dot(data.tip_velocity) +
-                             data.clamp_torque.dot(data.clamp_omega);
+  double input_power = solver_.baseForce().dot(exit_velocity) + data.coupling.dot(data.tip_velocity) +
+                       data.clamp_torque.dot(data.clamp_omega) + data.tip_clamp_torque.dot(data.tip_clamp_omega);
+  if (ends.winch) input_power += ends.winch_speed * paidOutEnergyPerLength(model, data, toVec3(exit_velocity));
   return {input_power, data.drag_power + added_power + damperPower(model, data)};
 }
 
@@ -112,9 +115,10 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   const Eigen::Vector3d clamp_rate = data.clamp_omega;
   const Eigen::Vector3d tip_rate1 =
       start.load_coupled ? Eigen::Vector3d(data.tip_velocity - start.target_velocity) : Eigen::Vector3d::Zero();
-  solver_.addJacobianTimes(model, -gh, 0.0, omega_, clamp_rate, translation_, tip_rate1);
+  const Eigen::Vector3d tip_clamp_rate = data.tip_clamp_omega;
+  solver_.addJacobianTimes(model, -gh, 0.0, omega_, clamp_rate, tip_clamp_rate, translation_, tip_rate1);
   solver_.solve(model, data, gh, gh * gh);
-  const StagePower power1 = stagePower(model, data);
+  const StagePower power1 = stagePower(model, data, start);
   stage_ = x;
   for (int k = first; k < n; ++k) {
     const StiffLinkTerms& terms = solver_.link(k);
@@ -148,13 +152,15 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     translation_.col(k) = 2.0 * shift1_.col(k) - rate_base;
   }
   const Eigen::Vector3d clamp2 = 2.0 * h * clamp_rate - h * data.clamp_omega;
+  const Eigen::Vector3d tip_clamp2 = 2.0 * h * tip_clamp_rate - h * data.tip_clamp_omega;
   const Eigen::Vector3d tip_rate2 =
       end.load_coupled ? Eigen::Vector3d(h * (data.tip_velocity - end.target_velocity) - 2.0 * g * h * tip_push1)
                        : Eigen::Vector3d::Zero();
-  solver_.addJacobianTimes(model, g, 0.0, rotation_, clamp2, translation_, 2.0 * tip_shift1 - tip_rate2);
-  solver_.addJacobianTimes(model, 0.0, 2.0 * g, spin1_, Eigen::Vector3d::Zero(), push1_, tip_push1);
+  solver_.addJacobianTimes(model, g, 0.0, rotation_, clamp2, tip_clamp2, translation_, 2.0 * tip_shift1 - tip_rate2);
+  solver_.addJacobianTimes(model, 0.0, 2.0 * g, spin1_, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), push1_,
+                           tip_push1);
   solver_.solve(model, data, gh, gh * gh);
-  const StagePower power2 = stagePower(model, data);
+  const StagePower power2 = stagePower(model, data, end);
   for (int k = first; k < n; ++k) {
     const Eigen::Vector3d spin2 = h * solver_.link(k).angular_acc;
     const Eigen::Vector3d turn2 = omega_.col(k) + gh * spin2;

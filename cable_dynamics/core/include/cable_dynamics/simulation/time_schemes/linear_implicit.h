@@ -46,12 +46,12 @@ class LinearImplicitScheme : public TimeScheme {
   void forget() override { tensions_known_ = false; }
 
  private:
-  /// A stage's powers [W]: what the base, the coupling and a turning clamp put in, and the power of the
-  /// drag, added-mass and damper forces (negative when they take energy out).
+  /// A stage's powers [W]: what the base (and a winch's paid-out cable), the coupling and turning clamps put
+  /// in, and the power of the drag, added-mass and damper forces (negative when they take energy out).
   struct StagePower {
     double input, dissipative;
   };
-  StagePower stagePower(const ChainModel& model, const ChainData& data) const;
+  StagePower stagePower(const ChainModel& model, const ChainData& data, const EndInputs& ends) const;
 
   double gamma_;
   bool tensions_known_ = false;  ///< the solver holds the previous step's second stage's Jacobians and tensions
