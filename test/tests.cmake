@@ -62,6 +62,9 @@ target_link_libraries(test_seabed cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 catkin_add_gtest(test_step_check test/test_step_check.cpp)
 target_link_libraries(test_step_check cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 target_compile_definitions(test_step_check PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+catkin_add_gtest(test_stable_step test/test_stable_step.cpp)
+target_link_libraries(test_stable_step cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_stable_step PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
 # The implicit integrator (issue 15): its recursion against a dense solve, and the scheme against RK4,
 # closed forms and the statics.

@@ -1,8 +1,12 @@
 #include "cable_dynamics/simulation/stable_step.h"
 
+#include <array>
 #include <cmath>
+#include <complex>
+#include <algorithm>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "cable_dynamics/dynamics/seabed_contact.h"
 #include "cable_dynamics/params/config_section.h"
@@ -10,22 +14,98 @@
 namespace cable_dynamics {
 namespace {
 
-/// RK4's stability limit of h |lambda| on the imaginary axis (2 sqrt 2); 2.78 on the real axis is close.
-constexpr double kRk4Reach = 2.8;
-/// The recommended step keeps a factor 2 from the limit.
+/// The recommended step keeps a factor 2 from the limit. The estimate below bounds the linearized
+/// system's rates for any state with the bend angles of the kink bound (kinkShare) and the tension bound
+/// (tensionBound); what the factor covers: (1) the kink bound is the angle a link's transverse load
+/// turns the hanging tension through, so a joint whose tension falls far below it (slack near an ROV)
+/// kinks further, and the spin damping grows with sin^2 of half the bend; (2) the velocity terms
+/// (gyroscopic, the spin's coupling to the transverse motion) are left out of the linearization; (3)
+/// near RK4's real-axis limit a damped mode decays slower than the exact one (R(z) > e^z for z < 0),
+/// which the step check's energy balance reads as energy created and retries. Measured against the
+/// finite-difference Jacobian and RK4 runs over the ROV's sweep (test_stable_step): rov_tether at 25
+/// links recommends 0.46 ms against the truth's 1.74 ms at its sharpest kink (the old estimate: 3.5 ms,
+/// twice beyond it), at 100 links 0.48 ms against about 1 ms.
 constexpr double kMargin = 2.0;
 
-/// Keeps the largest rate seen and the mode it belongs to.
-struct Stiffest {
-  double rate = 0.0;
-  std::string mode;
-  void consider(double candidate, const std::string& name) {
-    if (candidate > rate) {
-      rate = candidate;
-      mode = name;
+/// RK4's stability polynomial R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24.
+std::complex<double> rk4Amplification(std::complex<double> z) {
+  return 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
+}
+
+/// RK4's reach r(theta): the largest |z| with |R(t z / |z|)| <= 1 for all t <= |z|, on rays at angles
+/// theta = 90 ... 180 degrees from the positive real axis, every 0.25 degree. 2.828 on the imaginary
+/// axis, 2.785 on the real one, and down to 2.620 at 125 degrees (damping ratio 0.57): a damped
+/// oscillation has less room than either axis, which is why a spring and a damper of one mode are
+/// taken together (rk4Limit) instead of each against 2.8.
+struct Rk4Reach {
+  static constexpr int kSteps = 360;
+  std::array<double, kSteps + 1> reach{};
+  Rk4Reach() {
+    for (int i = 0; i <= kSteps; ++i) {
+      const double theta = M_PI * (0.5 + 0.5 * i / kSteps);
+      const std::complex<double> ray = std::polar(1.0, theta);
+      double t = 0.0;
+      const double step = 1e-3;
+      while (std::abs(rk4Amplification((t + step) * ray)) <= 1.0 + 1e-12) t += step;
+      double lo = t, hi = t + step;
+      for (int j = 0; j < 50; ++j) {
+        const double mid = 0.5 * (lo + hi);
+        (std::abs(rk4Amplification(mid * ray)) <= 1.0 + 1e-12 ? lo : hi) = mid;
+      }
+      reach[i] = lo;
     }
   }
 };
+
+/// The largest RK4 step for every mode whose eigenvalues solve lambda^2 + c lambda + k = 0 with
+/// 0 <= c <= damping and 0 <= k <= stiffness (rates per unit inertia: [1/s], [1/s^2]). A mode of the
+/// linearized chain, I lambda^2 + C lambda + K = 0 with symmetric C, K >= 0, has for its eigenvector v
+/// the scalar equation (v*Iv) lambda^2 + (v*Cv) lambda + (v*Kv) = 0: its eigenvalues lie in the set
+/// above when damping and stiffness bound the Rayleigh quotients of I^-1 C and I^-1 K (Gershgorin rows
+/// below). That set is the left half disc |lambda| <= sqrt(stiffness) cut at Re lambda >= -damping/2
+/// (oscillations) and the real segment [-damping, 0] (overdamped); the step must bring each of its
+/// rays inside RK4's reach.
+double rk4Limit(double damping, double stiffness) {
+  static const Rk4Reach table;
+  const double infinity = std::numeric_limits<double>::infinity();
+  double limit = damping > 0.0 ? table.reach[Rk4Reach::kSteps] / damping : infinity;
+  const double omega = std::sqrt(std::max(stiffness, 0.0));
+  if (omega == 0.0) return limit;
+  limit = std::min(limit, table.reach[0] / omega);  // the imaginary axis: an undamped oscillation
+  for (int i = 0; i < Rk4Reach::kSteps; ++i) {
+    // The interval [theta_i, theta_i+1]: the smaller reach of its ends against the larger |lambda|
+    // (the strip's bound grows towards the real axis); the reach varies by < 0.3 % over 0.25 degree.
+    const double theta = M_PI * (0.5 + 0.5 * (i + 1) / Rk4Reach::kSteps);
+    const double strip = -std::cos(theta) > 0.0 ? 0.5 * damping / -std::cos(theta) : infinity;
+    const double radius = std::min(omega, strip);
+    if (radius > 0.0) limit = std::min(limit, std::min(table.reach[i], table.reach[i + 1]) / radius);
+  }
+  return limit;
+}
+
+/// Keeps the mode with the smallest RK4 step and the rate it belongs to.
+struct Stiffest {
+  double limit = std::numeric_limits<double>::infinity();
+  double rate = 0.0;
+  std::string mode;
+  /// A mode with damping and stiffness rates per unit inertia, [1/s] and [1/s^2] (rk4Limit).
+  void consider(double damping, double stiffness, const std::string& name) {
+    const double h = rk4Limit(damping, stiffness);
+    if (h < limit) {
+      limit = h;
+      rate = std::max(damping, std::sqrt(std::max(stiffness, 0.0)));  // the largest |lambda| of the set
+      mode = name;
+    }
+  }
+  void oscillation(double omega, const std::string& name) { consider(0.0, omega * omega, name); }
+  void decay(double rate_, const std::string& name) { consider(rate_, 0.0, name); }
+};
+
+/// Fastest speed of a body moving by `motion` [m/s]: the drift plus the oscillation's amplitude
+/// times 2 pi / period (the attitude's lever on the offset point left out: small for the presets).
+double fastestSpeed(const MotionParams& motion) {
+  return motion.velocity.norm() + (motion.period > 0.0 ? motion.amplitude.norm() * 2.0 * M_PI / motion.period : 0.0);
+}
 
 /// The implicit integrator's step, for accuracy (StableStep::implicit_recommended). Continuum estimates
 /// over the deployed cable of length L, mass and added mass per length mu, polar inertia per length i_p:
@@ -72,6 +152,8 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
   // a heavy part below it puts on the links above: a bound, never an underestimate of a hanging cable's).
   double submerged = p.submerged_mass.cwiseAbs().sum();
   for (const LinkAttachment& a : p.attachments) submerged += std::abs(a.submerged_mass);
+  double deployed = 0.0;
+  for (int k = 0; k < n; ++k) deployed += std::max(p.length(k), 0.0);
   if (params.winch.enabled) {
     // The longest deployment at the heaviest per-length weight of its sections (no attachments with a winch).
     double per_length = 0.0;
@@ -79,59 +161,127 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
       if (p.length(k) > 0.0) per_length = std::max(per_length, std::abs(p.submerged_mass(k) / p.length(k)));
     }
     submerged = per_length * params.winch.max_length;
+    deployed = std::max(deployed, params.winch.max_length);
   }
-  const double tension = p.gravity * (submerged + std::abs(p.load_submerged_mass));
+  const double hanging = p.gravity * (submerged + std::abs(p.load_submerged_mass));
+  // The flow past the cable: the current (its fastest row with a profile) plus the faster end's speed.
+  // No point of the cable moves through the water faster than that in the presets' motions, short of a
+  // whip; its drag is the transverse load that bends the cable and adds to the tension.
+  double current = params.fluid.current.norm();
+  for (const Eigen::Vector4d& row : params.fluid.current_profile) current = std::max(current, row.tail<3>().norm());
+  const double ends_speed = std::max(fastestSpeed(params.base.motion),
+                                     params.load.mode != LoadMode::kFree ? fastestSpeed(params.load.motion) : 0.0);
+  const double flow = params.fluid.density > 0.0 ? current + ends_speed : 0.0;
+  // The tension bound: the hanging tension plus the normal drag of the whole deployed length at that
+  // flow (and the load's). At rest in a current the drag sets the tension as much as the weight does
+  // (rov_tether: 95 N hanging, 384 N of drag at 0.5 m/s), and the ROV's pull raises it (measured 1.2 kN
+  // over its sweep; the bound is 4.6 kN): the string modes grow as its square root.
+  double drag_load = 0.5 * params.fluid.density * params.load.drag_area * flow * flow;
+  double drag_cable = 0.0;
   for (int k = 0; k < n; ++k) {
-    const std::string joint = std::to_string(k + 1);
-    // The link's own mass and added mass; its attachments only slow it down (left out: a bound).
-    const double l = p.length(k), m = p.mass(k) + p.added_mass_per_length(k) * l;
-    if (l <= 0.0) continue;  // on a winch's drum
-    // Highest mode of a beaded string: 2 sqrt(T / (m l)) for links of mass m and length l.
-    stiffest.consider(2.0 * std::sqrt(tension / (m * l)), "the string mode of link " + joint + " under the hanging tension");
-    const double bend_inertia = p.mass(k) * l * l / 12.0;
-    const double k_bend = std::max(p.stiffness_elevation(k), p.stiffness_azimuth(k));
-    stiffest.consider(std::sqrt(4.0 * k_bend / bend_inertia), "the bend spring of joint " + joint);
-    stiffest.consider(std::sqrt(4.0 * p.stiffness_torsion(k) / p.inertia_polar(k)), "the torsion spring of joint " + joint);
-    const double c_bend = std::max(p.damping_elevation(k), p.damping_azimuth(k));
-    stiffest.consider(4.0 * c_bend / bend_inertia, "the bend damper of joint " + joint);
-    stiffest.consider(4.0 * p.damping_torsion(k) / p.inertia_polar(k), "the torsion damper of joint " + joint);
+    if (p.length(k) > 0.0) drag_cable += params.fluid.density * p.drag_normal(k) * p.radius(k) * flow * flow * p.length(k);
   }
-  if (p.tip_clamp_stiffness > 0.0 && n > 0) {
-    const double l = p.length(n - 1), bend_inertia = p.mass(n - 1) * l * l / 12.0;
-    stiffest.consider(std::sqrt(4.0 * p.tip_clamp_stiffness / bend_inertia), "the tip clamp's bend spring");
-    stiffest.consider(4.0 * p.tip_clamp_damping / bend_inertia, "the tip clamp's bend damper");
+  if (params.winch.enabled && deployed > 0.0) drag_cable *= params.winch.max_length / std::max(deployed, 1e-9);
+  const double tension = hanging + drag_cable + drag_load;
+  const double infinity = std::numeric_limits<double>::infinity();
+
+  // The kink bound (kinkShare): a joint turns the tension through the transverse load of one link, its
+  // weight and drag, f l, so tan(beta) <= f l / T with T the hanging tension. An end that imposes its own
+  // direction (the clamp, an ROV pulling where it goes) kinks the joint next to it by this too: the
+  // rov_tether preset at 25 links (4 m links) bends its last joint by up to 1.34 rad as the ROV sweeps
+  // (the bound: 1.1 rad), and by 0.67 rad at 100 links (bound 0.46 rad; within the margin).
+  // sin^2(beta / 2) is what a bend damper puts on each link's spin (below).
+  std::vector<double> spin_damping(n + 1, 0.0), spin_stiffness(n + 1, 0.0), across_damping(n + 1, 0.0),
+      across_stiffness(n + 1, 0.0);
+  for (int k = 0; k < n; ++k) {
+    const double l = p.length(k);
+    if (l <= 0.0) continue;  // on a winch's drum
+    const double weight = p.gravity * std::abs(p.submerged_mass(k)) / l;
+    const double drag = params.fluid.density * p.drag_normal(k) * p.radius(k) * flow * flow;
+    const double beta = hanging > 0.0 ? std::atan((weight + drag) * l / hanging) : 0.5 * M_PI;
+    const double share = std::pow(std::sin(0.5 * std::min(beta, 0.5 * M_PI)), 2);
+    // Joint k's dampers on the relative angular velocity: the torsion damper about the mean axis of the
+    // two links, the bend damper across it. A link bent by beta from that mean axis by beta/2 spins
+    // partly across it: the joint damps each link's spin by c_t cos^2(beta/2) + c_b sin^2(beta/2), and
+    // the transverse rotation by c_b cos^2 + c_t sin^2 (at most the larger of the two).
+    const double c_bend = std::max(p.damping_elevation(k), p.damping_azimuth(k)), c_twist = p.damping_torsion(k);
+    // The bend may be anything up to the bound: the largest of that over 0 <= sin^2 <= share.
+    spin_damping[k] = c_twist + std::max(c_bend - c_twist, 0.0) * share;
+    across_damping[k] = std::max(c_bend, c_twist);
+    // The torsion spring's torque is along the mean axis with a unit lever on either link's spin; the
+    // bend spring does not turn a link about its own axis.
+    spin_stiffness[k] = p.stiffness_torsion(k);
+    across_stiffness[k] = std::max(p.stiffness_elevation(k), p.stiffness_azimuth(k));
+  }
+  // A clamped tip: its bend damper on the last link's spin by the same share, no twist spring (a swivel).
+  double tip_spin_damping = 0.0;
+  if (n > 0 && (p.tip_clamp_stiffness > 0.0 || p.tip_clamp_damping > 0.0)) {
+    tip_spin_damping = p.tip_clamp_damping;  // any angle: the ROV's attitude sets the clamp (a bound)
+  }
+  const int first = [&] {
+    for (int k = 0; k < n; ++k) {
+      if (p.length(k) > 0.0) return k;
+    }
+    return n;
+  }();
+  for (int k = first; k < n; ++k) {
+    const std::string link = std::to_string(k + 1);
+    const double l = p.length(k), m = p.mass(k) + p.added_mass_per_length(k) * l;
+    // Gershgorin's rows of the joints' damping and stiffness on the link's own rotations: joint k (the
+    // base's clamp for the first: no neighbour) and joint k + 1 each add their coefficient on the
+    // diagonal and as much to a neighbour; the spin's inertia is the polar one alone (turning a link
+    // about its axis moves no other point), the transverse one the link's own about its centre.
+    auto row = [&](const std::vector<double>& joint) {
+      double r = (k > first ? 2.0 : 1.0) * joint[k];
+      if (k + 1 < n) r += 2.0 * joint[k + 1];
+      return r;
+    };
+    const double spin_c = row(spin_damping) + (k == n - 1 ? tip_spin_damping : 0.0), spin_k = row(spin_stiffness);
+    stiffest.consider(spin_c / p.inertia_polar(k), spin_k / p.inertia_polar(k),
+                      "the spin of link " + link + " (torsion springs, torsion and bend dampers)");
+    // Transverse: the bend springs and dampers (the old 4 k / I for uniform joints), the tension's
+    // geometric stiffness T l of a link turning about its centre (the zigzag, 12 T / (m l) per unit
+    // inertia with the added mass: the beaded string's 4 T / (m l) is for point masses and was a factor
+    // 1.6 low for default.yaml), and the linearized drag, rho C_n d |v| per length against the mass and
+    // added mass per length.
+    const double transverse = p.mass(k) * l * l / 12.0, with_fluid = m * l * l / 12.0;
+    const double tip_c = k == n - 1 ? p.tip_clamp_damping : 0.0, tip_k = k == n - 1 ? p.tip_clamp_stiffness : 0.0;
+    const double drag = params.fluid.density * 2.0 * p.radius(k) * p.drag_normal(k) * flow / (m / l);
+    stiffest.consider((row(across_damping) + tip_c) / transverse + drag,
+                      (row(across_stiffness) + tip_k) / transverse + tension * l / with_fluid,
+                      "the bending of link " + link + " (bend springs and dampers, tension, drag)");
   }
   if (params.load.mode != LoadMode::kFree && n > 0) {
     const double l = p.length(n - 1);
     const double tip_mass = p.load_mass + params.load.added_mass + 0.5 * (p.mass(n - 1) + p.added_mass_per_length(n - 1) * l);
-    stiffest.consider(std::sqrt(params.load.coupling_stiffness / tip_mass), "the load coupling's stiffness");
-    stiffest.consider(params.load.coupling_damping / tip_mass, "the load coupling's damping");
+    stiffest.consider(params.load.coupling_damping / tip_mass, params.load.coupling_stiffness / tip_mass,
+                      "the load coupling");
   }
   if (params.seabed.enabled) {
-    // The seabed's normal spring-damper on each link's mass per length, |lambda| = omega (zeta <= 1) or
-    // omega (zeta + sqrt(zeta^2 - 1)); and the friction's viscous regime below the regularization speed,
-    // mu w' / v_reg per unit mass, with w' the weight per length that presses the link down (its own).
+    // The seabed's normal spring-damper on each link's mass per length (omega, damping ratio zeta); and
+    // the friction's viscous regime below the regularization speed, mu w' / v_reg per unit mass, with
+    // w' the weight per length that presses the link down (its own).
     const SeabedContactConstants c = makeSeabedContact(params, p);
-    const double zeta = params.seabed.damping_ratio, reach = zeta <= 1.0 ? 1.0 : zeta + std::sqrt(zeta * zeta - 1.0);
+    const double zeta = params.seabed.damping_ratio;
     for (int k = 0; k < n; ++k) {
       const double l = p.length(k);
       if (l <= 0.0) continue;
       const std::string link = std::to_string(k + 1);
       const double mass = p.mass(k) / l, across = mass + p.added_mass_per_length(k);
-      stiffest.consider(reach * std::sqrt(c.stiffness / across), "the seabed's normal spring under link " + link);
+      const double omega = std::sqrt(c.stiffness / across);
+      stiffest.consider(2.0 * zeta * omega, omega * omega, "the seabed's normal spring under link " + link);
       const double pressing = std::max(p.gravity * p.submerged_mass(k) / l, 0.0);
-      stiffest.consider(c.friction_axial * pressing / (c.friction_velocity * mass), "the seabed's axial friction on link " + link);
-      stiffest.consider(c.friction_lateral * pressing / (c.friction_velocity * across),
-                        "the seabed's lateral friction on link " + link);
+      stiffest.decay(c.friction_axial * pressing / (c.friction_velocity * mass), "the seabed's axial friction on link " + link);
+      stiffest.decay(c.friction_lateral * pressing / (c.friction_velocity * across),
+                     "the seabed's lateral friction on link " + link);
     }
   }
   StableStep s;
   s.rate = stiffest.rate;
   s.mode = stiffest.mode;
-  const double infinity = std::numeric_limits<double>::infinity();
-  s.limit = s.rate > 0.0 ? kRk4Reach / s.rate : infinity;
-  s.recommended = s.rate > 0.0 ? kRk4Reach / (kMargin * s.rate) : infinity;
-  recommendImplicitStep(params, p, tension, s);
+  s.limit = stiffest.limit;
+  s.recommended = s.limit < infinity ? s.limit / kMargin : infinity;
+  recommendImplicitStep(params, p, hanging, s);
   return s;
 }
 

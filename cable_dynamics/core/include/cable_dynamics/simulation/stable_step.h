@@ -11,10 +11,10 @@ namespace cable_dynamics {
 
 /// The stiffest mode of a cable and the time steps it allows.
 struct StableStep {
-  double recommended = 0.0;  ///< RK4 with a factor 2 of margin, 1.4 / |lambda| [s]
-  double limit = 0.0;        ///< RK4's own limit, 2.8 / |lambda|: beyond it the stiffest mode grows [s]
-  double rate = 0.0;         ///< |lambda| of the stiffest mode [1/s]
-  std::string mode;          ///< which mode, e.g. "the bend damper of joint 3"
+  double recommended = 0.0;  ///< RK4 with a factor 2 of margin: limit / 2 [s]
+  double limit = 0.0;        ///< RK4's own limit for the bounded modes: beyond it the limiting mode grows [s]
+  double rate = 0.0;         ///< the largest |lambda| of the limiting mode's bound [1/s]
+  std::string mode;          ///< which mode, e.g. "the spin of link 3 (torsion springs, torsion and bend dampers)"
   /// simulation.integrator: implicit. Its recursion holds the joint springs and dampers, the drag, the
   /// tension's geometric stiffness and the load coupling implicitly, so no mode above limits it; its step
   /// is chosen for accuracy: h omega <= 0.25 (the implicit midpoint's frequency error (h omega)^2 / 12,
@@ -23,12 +23,14 @@ struct StableStep {
   std::string implicit_mode;  ///< the mode that sets it, or "the 10 ms cap"
 };
 
-/// Estimates |lambda| of each fast mode and takes the largest: the highest string mode of each link
-/// under the hanging tension, 2 sqrt(T / (m l)); each joint spring against the inertia it turns,
-/// sqrt(4 k / I); each joint damper, 4 c / I (the relative motion of neighbours doubles the rate
-/// twice over); the load coupling, sqrt(k_c / m_tip) and c_c / m_tip, with m_tip the load's mass and
-/// added mass plus half the last link's. RK4's stability region reaches 2.8 along the imaginary axis
-/// (oscillations) and 2.78 along the negative real axis (damping). Infinity when nothing is stiff.
+/// Bounds each fast mode's eigenvalues as the roots of lambda^2 + c lambda + k = 0 with c and k per
+/// unit inertia below Gershgorin's rows, and takes the step that keeps all of them inside RK4's stability
+/// region (its reach: 2.83 on the imaginary axis, 2.785 on the real one, 2.62 at 125 degrees): each
+/// link's spin (torsion springs; torsion dampers, and the bend dampers through sin^2 of half a kink,
+/// the bend bounded by tan(beta) <= f l / T); each link's transverse rotation (bend springs and dampers,
+/// the tension's 12 T / (m l), the linearized drag at the current plus the ends' speed); the load
+/// coupling; the seabed. The tension is bounded by the hanging weight plus the normal drag of the
+/// cable at that flow. docs/MODEL.md section 6. Infinity when nothing is stiff.
 StableStep estimateStableStep(const CableParams& params, const LinkProperties& properties);
 
 /// With simulation.integrator rk4, throws ConfigError on simulation.dt when dt exceeds the limit, naming
