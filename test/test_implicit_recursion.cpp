@@ -22,7 +22,7 @@ namespace {
 
 /// A stiff cable (bending model with springs and dampers) in a current, with the tip coupled to a
 /// target (`attached`) or free, unequal links.
-CableParams stiffCable(int n, bool attached, bool in_water) {
+CableParams stiffCable(int n, bool attached, bool in_water, const std::vector<std::string>& extra = {}) {
   std::vector<std::string> o = {
       "cable.links=" + std::to_string(n),
       "cable.stiffness={model: bending, bending_rigidity: 300, torsional_rigidity: 150}",
@@ -31,6 +31,7 @@ CableParams stiffCable(int n, bool attached, bool in_water) {
       "fluid.current=[0.8, -0.3, 0.1]",
   };
   if (attached) o.push_back("load={mass: 4.0, volume: 0.002, mode: attached, coupling: {stiffness: 5000, damping: 300}}");
+  o.insert(o.end(), extra.begin(), extra.end());
   CableParams p = loadConfigString(
       "cable: {links: 1, length: 6.0, diameter: 0.04, mass_per_length: 1.5}\nload: {mass: 4.0, volume: 0.002}\n"
       "fluid: {drag_normal: 1.2, drag_tangential: 0.02, added_mass: 1.0}\n",
@@ -84,10 +85,16 @@ TEST(ImplicitRecursion, ZeroWeightsGiveTheOrdinaryAccelerations) {
 }
 
 TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
-  for (bool in_water : {false, true}) {
+  // In air and in water, and then with a seabed 1.5 m below the base (with friction: its damping joins the
+  // drag's) and the tip clamped to the ROV: their blocks join the dense system as the drag's and the
+  // joints' do.
+  const std::vector<std::string> bed_and_clamp = {"seabed={depth: 1.5, friction: {axial: 0.3, lateral: 0.6}}",
+                                                  "load.fixity=clamped", "load.direction=[0.3, 0.2, 0.9]"};
+  for (int variant = 0; variant < 3; ++variant) {
+    const bool in_water = variant > 0, grounded = variant == 2;
     for (unsigned seed = 1; seed <= 3; ++seed) {
       const int n = 7, dof = 3 * n;
-      const CableParams p = stiffCable(n, true, in_water);
+      const CableParams p = stiffCable(n, true, in_water, grounded ? bed_and_clamp : std::vector<std::string>{});
       ChainDynamics f(p);
       Eigen::VectorXd q, qd, x(f.stateSize()), rhs(dof);
       randomState(n, seed + 10, q, qd);
@@ -110,6 +117,7 @@ TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
         base[k].block<3, 3>(0, 3 * (k - 1)) += -f.model().get(&LinkConstants::length, k - 1) * skew(u);
       }
       Eigen::MatrixXd damping = Eigen::MatrixXd::Zero(dof, dof), stiffness = Eigen::MatrixXd::Zero(dof, dof);
+      int contacts = 0;
       for (int k = 0; k < n; ++k) {
         const StiffLinkTerms& t = solver.link(k);
         // Joint k on the relative rotation of link k to link k-1 (to the clamp at rest for k = 0).
@@ -125,10 +133,16 @@ TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
         spatial.topRows(3) = Eigen::MatrixXd::Zero(3, dof);
         spatial.topRows(3).block<3, 3>(0, 3 * k).setIdentity();
         spatial.bottomRows(3) = base[k];
-        Eigen::Matrix<double, 6, 6> drag;
+        Eigen::Matrix<double, 6, 6> drag, contact;
         drag << t.drag_rr, t.drag_rv, t.drag_rv.transpose(), t.drag_vv;
         damping += spatial.transpose() * drag * spatial;
+        contact << t.contact_rr, t.contact_rv, t.contact_rv.transpose(), t.contact_vv;
+        stiffness += spatial.transpose() * contact * spatial;
+        if (grounded) contacts += t.in_contact ? 1 : 0;
       }
+      // A clamped tip: on the last link's rotation (the clamp at rest here).
+      stiffness.block<3, 3>(3 * (n - 1), 3 * (n - 1)) += solver.tipClampStiffness();
+      damping.block<3, 3>(3 * (n - 1), 3 * (n - 1)) += solver.tipClampDamping();
       // The load: coupling and drag at the tip.
       const LoadConstants& load = f.model().load();
       stiffness += load.coupling_stiffness * base[n].transpose() * base[n];
@@ -157,11 +171,15 @@ TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
       f.computeLoads(x, ends);
       solver.linearize(f.model(), f.data(), ends);
       solver.clearExtra();
-      solver.addJacobianTimes(f.model(), a, b, rotation, Eigen::Vector3d::Zero(), translation, tip);
+      solver.addJacobianTimes(f.model(), a, b, rotation, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), translation, tip);
       solver.solve(f.model(), f.data(), cd, ck);
       double error = 0.0;
       for (int k = 0; k < n; ++k) error = std::max(error, (solver.link(k).angular_acc - dense.segment<3>(3 * k)).norm());
-      EXPECT_LT(error, 1e-9 * dense.lpNorm<Eigen::Infinity>()) << "seed " << seed << (in_water ? " in water" : " in air");
+      if (grounded) {
+        EXPECT_GT(contacts, 0) << "seed " << seed << ": no link in the bed";
+        EXPECT_GT(solver.tipClampStiffness().norm(), 0.0);
+      }
+      EXPECT_LT(error, 1e-9 * dense.lpNorm<Eigen::Infinity>()) << "seed " << seed << " variant " << variant;
       // The tip's d: the load's acceleration less its known part, the tip Jacobian times the solution.
       EXPECT_LT((solver.tipDelta() - base[n] * dense).norm(), 1e-9 * (base[n] * dense).norm() + 1e-12);
     }
@@ -214,4 +232,80 @@ TEST(ImplicitRecursion, DragDampingIsTheDragsVelocityJacobian) {
   }
   EXPECT_GT(scale, 1e-3);
   EXPECT_LT(error, 1e-6 * scale);  // central differences: round-off and eps^2 terms
+}
+
+TEST(ImplicitRecursion, SeabedStiffnessIsTheContactForcesRotationJacobian) {
+  // The contact's stiffness blocks against central differences of the generalized forces in the links'
+  // rotations, with the seabed less without it (the same cable: the difference is the contact's), at rest
+  // (the damper and the friction then exert nothing) in air, on a flat bed 1 mm above the deepest contact
+  // point or the load (a resting penetration: the spring is 100 weights per 2 cm). Left out of the blocks:
+  // the bed's curvature (none here), the contact force's own turning with the link (s f = s k delta per
+  // point against the spring's s^2 k: delta / s) and its change of the inboard links' tension (geometric,
+  // l f): all proportional to the penetration, 0.6 to 1.5 % at 5 mm, so the tolerance 5e-3 at 1 mm.
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const int n = 7, dof = 3 * n;
+    const CableParams without = stiffCable(n, false, false);
+    ChainDynamics free(without);
+    Eigen::VectorXd q, qd, x(free.stateSize());
+    randomState(n, seed + 20, q, qd);
+    qd.setZero();
+    free.stateFromPaper(q, qd, x);
+    const EndInputs at_rest = endsFor(without, Eigen::Vector3d::Zero());
+    free.computeLoads(x, at_rest);
+    double deepest = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const Eigen::Vector3d base = free.data().links.get(&LinkBlock::base_pos, k);
+      const double l = free.model().get(&LinkConstants::length, k), uz = free.data().links.get(&LinkBlock::u, k).z();
+      for (int j = 0; j < 4; ++j) deepest = std::max(deepest, base.z() + (j + 0.5) / 4.0 * l * uz);  // the contact points
+    }
+    deepest = std::max(deepest, free.data().tip_position.z());  // and the load's
+    // The configured depth is below the base's rest position; the bed's paper z is what the points meet.
+    const double offset = ChainModel(stiffCable(n, false, false, {"seabed={depth: 1.0}"})).seabedContact().bed.shallowest() - 1.0;
+    const CableParams with = stiffCable(n, false, false, {"seabed={depth: " + std::to_string(deepest - offset - 0.001) + "}"});
+    ChainDynamics bed(with);
+    const EndInputs ends = endsFor(with, Eigen::Vector3d::Zero());
+    const double eps = 1e-7;
+    Eigen::MatrixXd difference(dof, dof);
+    Eigen::VectorXd plus(dof), minus(dof), plus_free(dof), minus_free(dof);
+    for (int j = 0; j < dof; ++j) {
+      const int k = j / 3;
+      Eigen::VectorXd px = x, mx = x;
+      const Eigen::Vector3d axis = x.segment<3>(StateLayout::axis(k)), turn = eps * Eigen::Vector3d::Unit(j % 3);
+      px.segment<3>(StateLayout::axis(k)) = Eigen::AngleAxisd(eps, turn.normalized()) * axis;
+      mx.segment<3>(StateLayout::axis(k)) = Eigen::AngleAxisd(-eps, turn.normalized()) * axis;
+      // The twist moves with the rotation as the kinematics have it (sigma' = -w.(e_z + u)/(1 + u_z)).
+      const double twist = -turn.dot(Eigen::Vector3d::UnitZ() + axis) / (1.0 + axis.z());
+      px(StateLayout::twist(k)) += twist;
+      mx(StateLayout::twist(k)) -= twist;
+      bed.generalizedForces(px, ends, false, plus);
+      bed.generalizedForces(mx, ends, false, minus);
+      free.generalizedForces(px, ends, false, plus_free);
+      free.generalizedForces(mx, ends, false, minus_free);
+      difference.col(j) = -((plus - minus) - (plus_free - minus_free)) / (2.0 * eps);
+    }
+    bed.computeLoads(x, ends);
+    StiffArticulatedBody solver(n);
+    solver.linearize(bed.model(), bed.data(), ends);
+    // The blocks mapped through the rotations: link k's base end moves by sum_{j<k} l_j dtheta_j x u_j.
+    Eigen::MatrixXd assembled = Eigen::MatrixXd::Zero(dof, dof), base = Eigen::MatrixXd::Zero(3, dof);
+    int contacts = 0;
+    for (int k = 0; k < n; ++k) {
+      const StiffLinkTerms& t = solver.link(k);
+      Eigen::MatrixXd spatial = Eigen::MatrixXd::Zero(6, dof);
+      spatial.block<3, 3>(0, 3 * k).setIdentity();
+      spatial.bottomRows(3) = base;
+      Eigen::Matrix<double, 6, 6> contact;
+      contact << t.contact_rr, t.contact_rv, t.contact_rv.transpose(), t.contact_vv;
+      assembled += spatial.transpose() * contact * spatial;
+      contacts += t.in_contact ? 1 : 0;
+      base.block<3, 3>(0, 3 * k) += -bed.model().get(&LinkConstants::length, k) * skew(t.axis);
+    }
+    assembled += base.transpose() * solver.loadContactStiffness() * base;  // base: the tip's Jacobian now
+    contacts += solver.loadContactStiffness().norm() > 0.0 ? 1 : 0;
+    const double error = (assembled - difference).norm() / assembled.norm();
+    std::cout << "seed " << seed << ": " << contacts << " links (or the load) in the bed, |K_blocks - K_fd| / |K_blocks| = " << error
+              << "\n";
+    EXPECT_GT(contacts, 0);
+    EXPECT_LT(error, 5e-3);
+  }
 }

@@ -156,8 +156,6 @@ TEST(Seabed, ConfigIsValidatedNamingTheKey) {
       {"{grid: {origin: [0, 0], spacing: [1, 1], depth: [[1, 2], [3]]}}", "seabed.grid.depth[1]"},
       {"{grid: {origin: [0, 0], spacing: [1, 1], depth: [[1, 2], [3, '4']]}}", "seabed.grid.depth[1][1]"},
       {"{grid_file: /nonexistent/bathymetry.yaml}", "seabed.grid_file"},
-      // The implicit step does not have the contact in its matrix yet.
-      {"{depth: 10}\nsimulation: {integrator: implicit}", "simulation.integrator"},
   };
   for (const auto& c : cases) EXPECT_EQ(refusedKey(cable + "seabed: " + c.first + "\n"), c.second) << c.first;
   // Defaults: half the diameter, and the stiffness that rests the cable at 1 % of it.
@@ -198,9 +196,15 @@ TEST(GroundedCatenary, AxialFrictionLowersTheAnchorTensionByMuTimesTheGroundedWe
   // part is the same catenary (the ends keep their distance; the water's drag at 0.05 m/s is 0.1 % of
   // the weight), and the tension falls from H at the touchdown to H - mu w L_g at the anchor.
   // mu w L_g (1250 N) below H (1670 N): the anchor still pulls (a larger mu would slacken the chain there).
+  // RK4 at 1 ms, and the implicit step at 10 ms (the contact's spring and the friction's viscous band,
+  // mu N / v_reg, in its matrix; explicit at 10 ms they would be unstable).
+  for (const char* integrator : {"rk4", "implicit"}) {
+  SCOPED_TRACE(integrator);
   const double mu = 0.15, v = 0.05;
   const std::string motion = ", velocity: [" + std::to_string(-v) + ", 0.0, 0.0]";
-  CableSimulator sim(loadConfigString(mooring("{axial: 0.15, lateral: 0.5}", motion)));
+  std::vector<std::string> overrides;
+  if (std::string(integrator) == "implicit") overrides = {"simulation.integrator=implicit", "simulation.dt=0.01"};
+  CableSimulator sim(loadConfigString(mooring("{axial: 0.15, lateral: 0.5}", motion), overrides));
   const Averages a = runAndAverage(sim, 60.0, 20.0);
   const double w = submergedWeight(0.05, 12.0);
   const double h = 50.0 + sim.dynamics().model().seabedContact().rest_penetration;
@@ -210,12 +214,14 @@ TEST(GroundedCatenary, AxialFrictionLowersTheAnchorTensionByMuTimesTheGroundedWe
   const double grounded = 150.0 - moving.suspended;
   const double horizontal = std::hypot(a.base_force.x(), a.base_force.y());
   const double drop = horizontal - a.coupling.norm();
-  std::cout << "[ grounded catenary, sliding ] H " << horizontal << " N (closed form " << moving.horizontal << "), anchor "
+  std::cout << "[ grounded catenary, sliding, " << integrator << " ] H " << horizontal << " N (closed form " << moving.horizontal << "), anchor "
             << a.coupling.norm() << " N, drop " << drop << " N (mu w L_g = " << mu * w * grounded << " N), grounded "
             << a.grounded << " m (" << grounded << "), deepest " << a.deepest << " m\n";
   EXPECT_NEAR(horizontal / moving.horizontal, 1.0, 0.01);
   EXPECT_NEAR(drop / (mu * w * grounded), 1.0, 0.02);
   EXPECT_LE(a.deepest, sim.dynamics().model().seabedContact().allowed_penetration);
+  EXPECT_EQ(a.retried, 0);
+  }
 }
 
 namespace {
@@ -479,3 +485,98 @@ TEST(SeabedWinch, AWinchLaysTheCableOnTheBottomAndHaulsItBackWithTheBalanceClose
   EXPECT_NEAR(s.deployed_length, 12.0, 0.05);
   EXPECT_LT(s.chain.seabed.max_penetration, 0.01);  // half the diameter
 }
+
+// The implicit step with the seabed in its matrix (each link's points in the bed: the normal spring and
+// damper and the friction's viscous band as 6x6 stiffness and damping about the link's base end,
+// stiff_articulated_body.h): the TMS tether preset (an ROV sweeping 20 m from its TMS, 27 to 29 m of the
+// 45 m tether on a sand bottom) against RK4 at the preset's 1 ms, over 60 s. Link ends, line pull and
+// grounded length; second order in dt (10 ms, 5 ms).
+TEST(SeabedImplicit, TheTmsTetherOnTheBottomMatchesRk4) {
+  auto run = [](const std::vector<std::string>& overrides, std::vector<SimulationSnapshot>& out) {
+    CableSimulator sim(loadConfigFile(std::string(CABLE_CONFIG_DIR) + "/tms_tether.yaml", overrides));
+    const long steps = std::lround(60.0 / sim.dt()), every = std::lround(0.5 / sim.dt());
+    for (long i = 1; i <= steps; ++i) {
+      const StepReport r = sim.step();
+      ASSERT_TRUE(r.ok) << r.message;
+      if (i % every != 0) continue;
+      out.emplace_back();
+      sim.snapshot(out.back());
+    }
+    EXPECT_EQ(sim.retriedSteps(), 0);
+  };
+  std::vector<SimulationSnapshot> truth;
+  run({}, truth);
+  double previous = NAN;
+  for (double dt : {0.01, 0.005}) {
+    std::vector<SimulationSnapshot> implicit;
+    run({"simulation.integrator=implicit", "simulation.dt=" + std::to_string(dt)}, implicit);
+    ASSERT_EQ(implicit.size(), truth.size());
+    double ends = 0.0, pull = 0.0, pull_scale = 0.0, grounded = 0.0, deepest = 0.0, grounded_least = 1e9;
+    for (size_t i = 0; i < truth.size(); ++i) {
+      ends = std::max(ends, (implicit[i].chain.ends - truth[i].chain.ends).colwise().norm().maxCoeff());
+      pull = std::max(pull, std::abs(implicit[i].line_pull - truth[i].line_pull));
+      pull_scale = std::max(pull_scale, truth[i].line_pull);
+      grounded = std::max(grounded, std::abs(implicit[i].chain.seabed.grounded_length - truth[i].chain.seabed.grounded_length));
+      grounded_least = std::min(grounded_least, truth[i].chain.seabed.grounded_length);
+      deepest = std::max(deepest, implicit[i].chain.seabed.max_penetration);
+    }
+    std::cout << "[ TMS tether, implicit at " << dt << " s ] link ends within " << ends << " m of RK4's, line pull within "
+              << pull << " N of up to " << pull_scale << " N, grounded length within " << grounded << " m (at least "
+              << grounded_least << " m on the bottom), deepest " << deepest << " m";
+    if (!std::isnan(previous)) std::cout << "; order " << std::log2(previous / ends);
+    std::cout << "\n";
+    EXPECT_GT(grounded_least, 20.0);  // the contact is exercised
+    EXPECT_LT(ends, 2e-3);            // measured 0.76 mm at 10 ms
+    EXPECT_LT(pull, 1e-3 * pull_scale);
+    EXPECT_LT(grounded, 0.375);       // within a contact point's share of cable (1.5 m links, 4 points)
+    EXPECT_LT(deepest, 0.0125);       // the allowed penetration, half the diameter
+    if (!std::isnan(previous)) EXPECT_NEAR(std::log2(previous / ends), 2.0, 0.3);
+    previous = ends;
+  }
+}
+
+TEST(SeabedImplicit, AWinchLaysTheTetherOnTheBottomAtTenMilliseconds) {
+  // SeabedWinch's case with the implicit step at 10 ms (RK4 needs 1 ms): 8 m paid out onto the bottom and
+  // hauled back; against RK4 the grounded length at the end of the pay-out and after the haul-in.
+  auto run = [](const std::string& integrator, double dt, double& grounded_paid_out, double& grounded_end,
+                int& added, int& retried) {
+    CableSimulator sim(loadConfigString(
+        "cable: {links: 12, length: 12.0, diameter: 0.02, mass_per_length: 0.8,\n"
+        "        stiffness: {model: bending, bending_rigidity: 5.0, torsional_rigidity: 2.0}}\n"
+        "fluid: {current: [0.3, 0.0, 0.0]}\n"
+        "seabed: {depth: 10.0, friction: {axial: 0.3, lateral: 0.6}}\n"
+        "initial: {mode: equilibrium}\n"
+        "winch: {max_length: 24.0, min_length: 6.0, max_speed: 0.5, max_acceleration: 0.5, schedule: "
+        "[{time: 0.0, speed: 0.4}, {time: 20.0, speed: 0.0}, {time: 25.0, speed: -0.4}, {time: 45.0, speed: 0.0}]}\n",
+        {"simulation.integrator=" + integrator, "simulation.dt=" + std::to_string(dt)}));
+    SimulationSnapshot s;
+    const long steps = std::lround(50.0 / dt);
+    for (long i = 1; i <= steps; ++i) {
+      const StepReport r = sim.step();
+      ASSERT_TRUE(r.ok) << r.message;
+      if (i == std::lround(22.0 / dt)) {
+        sim.snapshot(s);
+        grounded_paid_out = s.chain.seabed.grounded_length;
+      }
+    }
+    sim.snapshot(s);
+    grounded_end = s.chain.seabed.grounded_length;
+    added = sim.linksAdded();
+    retried = sim.retriedSteps();
+    EXPECT_LT(s.chain.seabed.max_penetration, 0.01);
+  };
+  double rk4_out = 0.0, rk4_end = 0.0, out = 0.0, end = 0.0;
+  int rk4_added = 0, added = 0, rk4_retried = 0, retried = 0;
+  run("rk4", 0.001, rk4_out, rk4_end, rk4_added, rk4_retried);
+  run("implicit", 0.01, out, end, added, retried);
+  std::cout << "[ winch onto the bottom, implicit at 10 ms ] grounded " << out << " m paid out (RK4 " << rk4_out << "), "
+            << end << " m hauled in (RK4 " << rk4_end << "); links added " << added << " (RK4 " << rk4_added << ")\n";
+  // The grounded length counts contact points in the bed: quantized to one point's share, 0.25 m (1 m
+  // links, 4 points), and a point just at the bed's level is in or out by a hair. Measured one point apart
+  // (5.25 against 5.5 m); two allowed.
+  EXPECT_NEAR(out, rk4_out, 0.5);
+  EXPECT_NEAR(end, rk4_end, 0.5);
+  EXPECT_EQ(added, rk4_added);
+  EXPECT_EQ(retried, 0);
+}
+

@@ -58,6 +58,7 @@ catkin_add_gtest(test_sections test/test_sections.cpp)
 target_link_libraries(test_sections cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 catkin_add_gtest(test_seabed test/test_seabed.cpp)
 target_link_libraries(test_seabed cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_seabed PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
 catkin_add_gtest(test_step_check test/test_step_check.cpp)
 target_link_libraries(test_step_check cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

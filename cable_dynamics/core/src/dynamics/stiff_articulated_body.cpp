@@ -27,6 +27,7 @@
 
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/hot_path.h"
+#include "cable_dynamics/dynamics/seabed_contact.h"
 
 // Inline every Eigen call of the two hot functions: without it GCC calls the 3x3 products out of line
 // (and in the default architecture's code from the AVX2 and AVX-512 copies).
@@ -53,6 +54,38 @@ inline Eigen::Matrix3d jointBlock(double across, double about, const Eigen::Vect
   return across * (Eigen::Matrix3d::Identity() - mm) + about * mm;
 }
 
+/// One contact point's stiffness and damping in the world (3x3 each), by pointContact()'s law at p moving
+/// at v on a link of axis `axis` (zero for the load), `share` metres of cable: the normal spring
+/// share k n n^T (the bed's curvature left out), the damper share c ramp n n^T, and the friction's
+/// secant N / max(|slip|, v_r) times its coefficients on the tangent plane. false above the bed.
+bool pointContactJacobian(const SeabedContactConstants& c, double share, double k, double damping, double rest,
+                          const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Eigen::Vector3d& axis,
+                          Eigen::Matrix3d& stiffness, Eigen::Matrix3d& damper) {
+  const SeabedProbe probe = c.bed.probe(p.x(), p.y());
+  const double delta = Seabed::penetration(probe, p.z());
+  if (delta <= 0.0) return false;
+  const Eigen::Vector3d n = toEigen(probe.into);
+  const double rate = v.dot(n), ramp = std::min(1.0, delta / rest);
+  const double normal = std::max(0.0, share * (k * delta + damping * ramp * rate));
+  const Eigen::Matrix3d nn = n * n.transpose();
+  stiffness = (share * k) * nn;
+  damper = (share * damping * ramp) * nn;
+  if (normal > 0.0 && (c.friction_axial > 0.0 || c.friction_lateral > 0.0)) {
+    const Eigen::Vector3d slip = v - rate * n;
+    const double scale = normal / std::max(slip.norm(), c.friction_velocity);
+    const Eigen::Matrix3d tangent = Eigen::Matrix3d::Identity() - nn;
+    const Eigen::Vector3d along = axis - axis.dot(n) * n;
+    if (along.squaredNorm() > 1e-12) {
+      const Eigen::Vector3d unit = along.normalized();
+      const Eigen::Matrix3d aa = unit * unit.transpose();
+      damper += scale * (c.friction_axial * aa + c.friction_lateral * (tangent - aa));
+    } else {
+      damper += (scale * c.friction_lateral) * tangent;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links) {}
@@ -68,6 +101,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
     gaussLegendreUnit(points_, nodes_, weights_);
   }
   const LinkBlocks& blocks = data.links;
+  const SeabedContactConstants& contact = model.seabedContact();
   for (int k = first; k < n; ++k) {
     StiffLinkTerms& t = links_[k];
     const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
@@ -125,7 +159,12 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
       // [u]x^T C2 [u]x: [u]x^T P [u]x = P, [u]x^T u u^T [u]x = 0, and (u x n)(u x n)^T for n n^T.
       const Eigen::Matrix3d unur = un * ur.transpose();
       t.drag_rr = a[2] * P + g[2] * un * un.transpose() - g[3] * (unur + unur.transpose()) + g[4] * ur * ur.transpose();
+    } else if (contact.enabled()) {
+      t.drag_rr.setZero();  // the seabed's damping adds to them below
+      t.drag_rv.setZero();
+      t.drag_vv.setZero();
     }
+    if (contact.enabled()) linearizeContact(model, data, k, t);
   }
   // Geometric stiffness: the moment of everything outboard about link k's base end, u x G with
   // G = l F_outboard + (the link's own first moment), turns with the link: dtau = -(G.u) P dtheta - ...;
@@ -157,8 +196,55 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
     tip_clamp_stiffness_ = jointBlock(p.tip_clamp_stiffness, 0.0, mean);
     tip_clamp_damping_ = jointBlock(p.tip_clamp_damping, 0.0, mean);
   }
+  load_contact_stiffness_.setZero();
+  load_contact_damping_.setZero();
+  if (contact.load_contact) {
+    pointContactJacobian(contact, 1.0, contact.load_stiffness, contact.load_damping, contact.load_rest, data.tip_position,
+                         data.tip_velocity, Eigen::Vector3d::Zero(), load_contact_stiffness_, load_contact_damping_);
+  }
   coupling_stiffness_ = ends.load_coupled ? load.coupling_stiffness : 0.0;
   coupling_damping_ = ends.load_coupled ? load.coupling_damping : 0.0;
+}
+
+void StiffArticulatedBody::linearizeContact(const ChainModel& model, const ChainData& data, int k, StiffLinkTerms& t) {
+  // The points' stiffness K(s) and damping D(s) summed as K_m = sum s^m K(s) (and D_m), then laid out over
+  // (rotation, base end) as the drag's: [[-[u]x K2 [u]x, [u]x K1], [-K1 [u]x, K0]].
+  const SeabedContactConstants& c = model.seabedContact();
+  const double l = model.get(&LinkConstants::length, k);
+  t.in_contact = false;
+  t.contact_rr.setZero();
+  t.contact_rv.setZero();
+  t.contact_vv.setZero();
+  if (l <= 0.0) return;
+  const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), u = data.links.get(&LinkBlock::u, k);
+  if (std::max(base.z(), base.z() + l * u.z()) <= c.bed.shallowest()) return;  // all above the bed
+  const Eigen::Vector3d velocity = data.links.get(&LinkBlock::base_vel, k), rate = data.links.get(&LinkBlock::axis_rate, k);
+  const double share = l / c.points;
+  Eigen::Matrix3d k_m[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  Eigen::Matrix3d d_m[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  Eigen::Matrix3d stiffness, damper;
+  for (int j = 0; j < c.points; ++j) {
+    const double s = c.node[j] * l;
+    if (!pointContactJacobian(c, share, c.stiffness, c.damping[k], c.rest_penetration, base + s * u, velocity + s * rate, u,
+                              stiffness, damper)) {
+      continue;
+    }
+    t.in_contact = true;
+    double power = 1.0;
+    for (int m = 0; m < 3; ++m) {
+      k_m[m] += power * stiffness;
+      d_m[m] += power * damper;
+      power *= s;
+    }
+  }
+  if (!t.in_contact) return;
+  const Eigen::Matrix3d x = skew(u);
+  t.contact_rr = -x * k_m[2] * x;
+  t.contact_rv = x * k_m[1];
+  t.contact_vv = k_m[0];
+  t.drag_rr -= x * d_m[2] * x;
+  t.drag_rv += x * d_m[1];
+  t.drag_vv += d_m[0];
 }
 
 void StiffArticulatedBody::geometricFromLastTension(const ChainModel& model) {
@@ -196,13 +282,19 @@ CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& mod
     t.extra_torque += damping_factor * (t.drag_rr * r + t.drag_rv * v);
     t.extra_force += damping_factor * (t.drag_rv.transpose() * r + t.drag_vv * v);
     t.extra_torque += (stiffness_factor * t.geometric) * (r - r.dot(t.axis) * t.axis);  // (G.u) P r
+    if (t.in_contact) {
+      t.extra_torque += stiffness_factor * (t.contact_rr * r + t.contact_rv * v);
+      t.extra_force += stiffness_factor * (t.contact_rv.transpose() * r + t.contact_vv * v);
+    }
   }
   // The tip clamp: its spring on the last link's rotation relative to the clamp, -K (r - r_clamp).
   const Eigen::Vector3d tip_relative = rotation.col(n - 1) - tip_rotation;
   links_[n - 1].extra_torque +=
       stiffness_factor * (tip_clamp_stiffness_ * tip_relative) + damping_factor * (tip_clamp_damping_ * tip_relative);
   load_extra_ += (stiffness_factor * coupling_stiffness_ + damping_factor * coupling_damping_) * tip_translation +
-                 damping_factor * (load_drag_ * tip_translation);
+                 damping_factor * (load_drag_ * tip_translation) +
+                 stiffness_factor * (load_contact_stiffness_ * tip_translation) +
+                 damping_factor * (load_contact_damping_ * tip_translation);
 }
 
 CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data, double damping_weight,
@@ -214,7 +306,9 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   // The load, a point at the tip: no rotational inertia, its mass plus the weighted drag and coupling.
   Eigen::Matrix3d child_rr = Eigen::Matrix3d::Zero(), child_rv = Eigen::Matrix3d::Zero();
-  Eigen::Matrix3d child_vv = (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity + cd * load_drag_;
+  const Eigen::Matrix3d load_mass = (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity +
+                                    cd * (load_drag_ + load_contact_damping_) + ck * load_contact_stiffness_;
+  Eigen::Matrix3d child_vv = load_mass;
   Eigen::Vector3d child_pr = Eigen::Vector3d::Zero();
   Eigen::Vector3d child_pv = load.inertia * data.tip_known_acc - data.load_external - load_extra_;
   for (int k = n - 1; k >= first; --k) {
@@ -238,9 +332,14 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     // translation l A; plus the drag's damping and the geometric stiffness, weighted.
     const Eigen::Matrix3d uu = u * u.transpose(), P = identity - uu;
     const double la = l * c.added[i];
-    const Eigen::Matrix3d own_rv = c.half_moment[i] * skew(u) + cd * t.drag_rv;
-    t.own_vr = own_rv.transpose();
+    Eigen::Matrix3d own_rv = c.half_moment[i] * skew(u) + cd * t.drag_rv;
     t.own_vv = c.translational[i] * identity - la * uu + cd * t.drag_vv;
+    if (t.in_contact) {
+      own_rv += ck * t.contact_rv;
+      t.own_vv += ck * t.contact_vv;
+      a_rr += ck * t.contact_rr;
+    }
+    t.own_vr = own_rv.transpose();
     a_rr += (c.own_transverse[i] + ck * t.geometric) * P + c.polar[i] * uu + cd * t.drag_rr;
     if (k == n - 1) a_rr += ck * tip_clamp_stiffness_ + cd * tip_clamp_damping_;  // zero unless clamped
     a_rv += own_rv;
@@ -291,8 +390,6 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
   tip_delta_ = d;
   // Joint forces from the tip inwards, J_k = J_{k+1} + (the link's inertia force less its loads), for
   // the tensions the next linearization's geometric stiffness reads.
-  const Eigen::Matrix3d load_mass =
-      (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity + cd * load_drag_;
   Eigen::Vector3d joint = load_mass * d + load.inertia * data.tip_known_acc - data.load_external - load_extra_;
   tip_tension_ = -joint.dot(blocks.get(&LinkBlock::u, n - 1));
   for (int k = n - 1; k >= first; --k) {

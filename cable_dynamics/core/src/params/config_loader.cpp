@@ -364,12 +364,6 @@ CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   simulation.rejectUnknownKeys();
   if (top.has("winch")) parseWinch(top.sub("winch"), p);
   top.rejectUnknownKeys();
-  // The implicit step folds the joints' and a clamped tip's springs, the drag and the coupling into its
-  // recursion; the seabed's contact is not in it yet, and explicit at its 10 ms steps it would be
-  // unstable: refused rather than run wrong.
-  if (p.simulation.integrator == Integrator::kImplicit && p.seabed.enabled) {
-    throw ConfigError("simulation.integrator", "implicit", "rk4 or semi_implicit with a seabed (its contact is not in the implicit step yet)");
-  }
   if (p.load.fixity == TipFixity::kClamped && p.stiffness.model != StiffnessModel::kBending) {
     throw ConfigError("load.fixity", "clamped", "pinned with cable.stiffness.model: paper; use model: bending");
   }

@@ -14,6 +14,10 @@
 ///          base end turns with the link, K_g = (G . u) (I - u u^T), G = l F_outboard + first moment of
 ///          the link's own loads (gravity's stiffness of a hanging chain exactly; clipped at 0 in compression);
 ///        - the load's drag Jacobian and its PD coupling (k_c, c_c) added to the load's mass;
+///        - the seabed's contact at each link's points in the bed (seabed_contact.h): the normal spring
+///          share k n n^T and damper, and the friction's secant damping N / max(|slip|, v_r) (the
+///          regularized viscous band: the stiff part) over the tangent plane, as a 6x6 stiffness and a
+///          6x6 damping of the link about its base end (the load's point contact as a 3x3 pair);
 ///        - a clamped tip's bend spring and damper: 3x3 blocks k (I - m m^T), c (I - m m^T) on the last
 ///          link's rotation relative to the clamp (m: the mean of its axis and the clamp's; no twist: a
 ///          swivel), added to that link's rotational inertia.
@@ -40,7 +44,11 @@ struct StiffLinkTerms {
   Eigen::Matrix3d joint_damping = Eigen::Matrix3d::Zero();    ///< D_j [N m s/rad]
   /// Drag damping over (omega, v_base): torque about the base end per omega [N m s], per v_base [N s],
   /// force per v_base [N s/m] (force per omega is drag_rv^T).
+  /// The seabed's damping adds to them.
   Eigen::Matrix3d drag_rr = Eigen::Matrix3d::Zero(), drag_rv = Eigen::Matrix3d::Zero(), drag_vv = Eigen::Matrix3d::Zero();
+  /// The seabed's stiffness over (rotation, base-end displacement), the same layout [N m/rad], [N/rad], [N/m].
+  Eigen::Matrix3d contact_rr = Eigen::Matrix3d::Zero(), contact_rv = Eigen::Matrix3d::Zero(), contact_vv = Eigen::Matrix3d::Zero();
+  bool in_contact = false;  ///< the contact blocks are not zero
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< u at the linearization
   double geometric = 0.0;  ///< G . u, the geometric stiffness across the link [N m/rad]
   Eigen::Vector3d extra_torque = Eigen::Vector3d::Zero();  ///< added to the right-hand side: about the base end [N m]
@@ -78,8 +86,8 @@ class StiffArticulatedBody {
   /// Adds stiffness_factor K r + damping_factor D r to the right-hand side, as generalized forces:
   /// r is a rotation (or rotation rate) of each link, `rotation` (3 x n) [rad or rad/s], with
   /// `base_rotation` the base clamp's and `tip_rotation` a clamped tip's (the springs act on the
-  /// differences), a translation of each base end `translation` (3 x n) (the drag's damping reads it) and
-  /// of the tip, `tip_translation`.
+  /// differences), a translation of each base end `translation` (3 x n) (the drag's damping and the
+  /// seabed read it) and of the tip, `tip_translation` (relative to the target when coupled).
   void addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
                         const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
                         const Eigen::Vector3d& tip_rotation, const Eigen::Matrix3Xd& translation,
@@ -93,13 +101,23 @@ class StiffArticulatedBody {
   const StiffLinkTerms& link(int k) const { return links_[k]; }
   /// d at the tip: the load's acceleration is tip_known_acc + tipDelta() [m/s^2].
   const Eigen::Vector3d& tipDelta() const { return tip_delta_; }
+  /// A clamped tip's blocks on the last link's rotation relative to the clamp (zero unless clamped).
+  const Eigen::Matrix3d& tipClampStiffness() const { return tip_clamp_stiffness_; }
+  const Eigen::Matrix3d& tipClampDamping() const { return tip_clamp_damping_; }
+  /// The load's seabed contact blocks on its displacement (zero off the bed).
+  const Eigen::Matrix3d& loadContactStiffness() const { return load_contact_stiffness_; }
   /// Force the base exerts on the base link at its base end [N] (the joint force J of the base link).
   const Eigen::Vector3d& baseForce() const { return base_force_; }
 
  private:
+  /// Link k's seabed stiffness and damping (added to its drag's) at the state of `data`.
+  void linearizeContact(const ChainModel& model, const ChainData& data, int k, StiffLinkTerms& t);
+
   std::vector<StiffLinkTerms, Eigen::aligned_allocator<StiffLinkTerms>> links_;
   Eigen::Matrix3d load_drag_ = Eigen::Matrix3d::Zero();  ///< load drag's damping [N s/m]
   double coupling_stiffness_ = 0.0, coupling_damping_ = 0.0;  ///< of the PD coupling, when coupled
+  /// The load's seabed contact: its normal spring and damper, its friction's secant damping [N/m], [N s/m].
+  Eigen::Matrix3d load_contact_stiffness_ = Eigen::Matrix3d::Zero(), load_contact_damping_ = Eigen::Matrix3d::Zero();
   Eigen::Vector3d load_extra_ = Eigen::Vector3d::Zero();  ///< extra force on the load [N]
   /// A clamped tip's blocks on the last link's rotation relative to the clamp [N m/rad], [N m s/rad].
   Eigen::Matrix3d tip_clamp_stiffness_ = Eigen::Matrix3d::Zero(), tip_clamp_damping_ = Eigen::Matrix3d::Zero();

@@ -78,7 +78,7 @@ LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainMod
   double input_power = solver_.baseForce().dot(exit_velocity) + data.coupling.dot(data.tip_velocity) +
                        data.clamp_torque.dot(data.clamp_omega) + data.tip_clamp_torque.dot(data.tip_clamp_omega);
   if (ends.winch) input_power += ends.winch_speed * paidOutEnergyPerLength(model, data, toVec3(exit_velocity));
-  return {input_power, data.drag_power + added_power + damperPower(model, data)};
+  return {input_power, data.drag_power + added_power + damperPower(model, data) - data.contact_dissipation};
 }
 
 bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,
@@ -113,8 +113,10 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     translation_.col(k) = data.links.get(&LinkBlock::base_vel, k);
   }
   const Eigen::Vector3d clamp_rate = data.clamp_omega;
+  // The tip's rate for the stiffness on it: relative to the target when coupled (the coupling's spring),
+  // its own velocity otherwise (the seabed's contact with the load).
   const Eigen::Vector3d tip_rate1 =
-      start.load_coupled ? Eigen::Vector3d(data.tip_velocity - start.target_velocity) : Eigen::Vector3d::Zero();
+      start.load_coupled ? Eigen::Vector3d(data.tip_velocity - start.target_velocity) : data.tip_velocity;
   const Eigen::Vector3d tip_clamp_rate = data.tip_clamp_omega;
   solver_.addJacobianTimes(model, -gh, 0.0, omega_, clamp_rate, tip_clamp_rate, translation_, tip_rate1);
   solver_.solve(model, data, gh, gh * gh);
@@ -154,8 +156,8 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   const Eigen::Vector3d clamp2 = 2.0 * h * clamp_rate - h * data.clamp_omega;
   const Eigen::Vector3d tip_clamp2 = 2.0 * h * tip_clamp_rate - h * data.tip_clamp_omega;
   const Eigen::Vector3d tip_rate2 =
-      end.load_coupled ? Eigen::Vector3d(h * (data.tip_velocity - end.target_velocity) - 2.0 * g * h * tip_push1)
-                       : Eigen::Vector3d::Zero();
+      h * (end.load_coupled ? Eigen::Vector3d(data.tip_velocity - end.target_velocity) : data.tip_velocity) -
+      2.0 * g * h * tip_push1;
   solver_.addJacobianTimes(model, g, 0.0, rotation_, clamp2, tip_clamp2, translation_, 2.0 * tip_shift1 - tip_rate2);
   solver_.addJacobianTimes(model, 0.0, 2.0 * g, spin1_, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), push1_,
                            tip_push1);

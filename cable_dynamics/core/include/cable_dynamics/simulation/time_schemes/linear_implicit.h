@@ -47,7 +47,8 @@ class LinearImplicitScheme : public TimeScheme {
 
  private:
   /// A stage's powers [W]: what the base (and a winch's paid-out cable), the coupling and turning clamps put
-  /// in, and the power of the drag, added-mass and damper forces (negative when they take energy out).
+  /// in, and the power of the drag, added-mass, damper and seabed forces (negative when they take energy
+  /// out; the seabed's springs store theirs as contact energy).
   struct StagePower {
     double input, dissipative;
   };
