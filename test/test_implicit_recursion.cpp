@@ -136,7 +136,7 @@ TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
         Eigen::Matrix<double, 6, 6> drag, contact;
         drag << t.drag_rr, t.drag_rv, t.drag_rv.transpose(), t.drag_vv;
         damping += spatial.transpose() * drag * spatial;
-        contact << t.contact_rr, t.contact_rv, t.contact_rv.transpose(), t.contact_vv;
+        contact << solver.contact(k).rr, solver.contact(k).rv, solver.contact(k).rv.transpose(), solver.contact(k).vv;
         stiffness += spatial.transpose() * contact * spatial;
         if (grounded) contacts += t.in_contact ? 1 : 0;
       }
@@ -295,7 +295,7 @@ TEST(ImplicitRecursion, SeabedStiffnessIsTheContactForcesRotationJacobian) {
       spatial.block<3, 3>(0, 3 * k).setIdentity();
       spatial.bottomRows(3) = base;
       Eigen::Matrix<double, 6, 6> contact;
-      contact << t.contact_rr, t.contact_rv, t.contact_rv.transpose(), t.contact_vv;
+      contact << solver.contact(k).rr, solver.contact(k).rv, solver.contact(k).rv.transpose(), solver.contact(k).vv;
       assembled += spatial.transpose() * contact * spatial;
       contacts += t.in_contact ? 1 : 0;
       base.block<3, 3>(0, 3 * k) += -bed.model().get(&LinkConstants::length, k) * skew(t.axis);

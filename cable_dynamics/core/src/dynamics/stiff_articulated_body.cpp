@@ -88,7 +88,7 @@ bool pointContactJacobian(const SeabedContactConstants& c, double share, double 
 
 }  // namespace
 
-StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links) {}
+StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links), contact_(links) {}
 
 CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends,
                                      bool use_last_tension) {
@@ -164,7 +164,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
       t.drag_rv.setZero();
       t.drag_vv.setZero();
     }
-    if (contact.enabled()) linearizeContact(model, data, k, t);
+    if (contact.enabled()) linearizeContact(model, data, k, t, contact_[k]);
   }
   // Geometric stiffness: the moment of everything outboard about link k's base end, u x G with
   // G = l F_outboard + (the link's own first moment), turns with the link: dtau = -(G.u) P dtheta - ...;
@@ -206,15 +206,14 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   coupling_damping_ = ends.load_coupled ? load.coupling_damping : 0.0;
 }
 
-void StiffArticulatedBody::linearizeContact(const ChainModel& model, const ChainData& data, int k, StiffLinkTerms& t) {
+void StiffArticulatedBody::linearizeContact(const ChainModel& model, const ChainData& data, int k, StiffLinkTerms& t,
+                                            StiffContactTerms& out) {
   // The points' stiffness K(s) and damping D(s) summed as K_m = sum s^m K(s) (and D_m), then laid out over
   // (rotation, base end) as the drag's: [[-[u]x K2 [u]x, [u]x K1], [-K1 [u]x, K0]].
   const SeabedContactConstants& c = model.seabedContact();
   const double l = model.get(&LinkConstants::length, k);
   t.in_contact = false;
-  t.contact_rr.setZero();
-  t.contact_rv.setZero();
-  t.contact_vv.setZero();
+  out = StiffContactTerms();
   if (l <= 0.0) return;
   const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), u = data.links.get(&LinkBlock::u, k);
   if (std::max(base.z(), base.z() + l * u.z()) <= c.bed.shallowest()) return;  // all above the bed
@@ -239,9 +238,9 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
   }
   if (!t.in_contact) return;
   const Eigen::Matrix3d x = skew(u);
-  t.contact_rr = -x * k_m[2] * x;
-  t.contact_rv = x * k_m[1];
-  t.contact_vv = k_m[0];
+  out.rr = -x * k_m[2] * x;
+  out.rv = x * k_m[1];
+  out.vv = k_m[0];
   t.drag_rr -= x * d_m[2] * x;
   t.drag_rv += x * d_m[1];
   t.drag_vv += d_m[0];
@@ -283,8 +282,9 @@ CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& mod
     t.extra_force += damping_factor * (t.drag_rv.transpose() * r + t.drag_vv * v);
     t.extra_torque += (stiffness_factor * t.geometric) * (r - r.dot(t.axis) * t.axis);  // (G.u) P r
     if (t.in_contact) {
-      t.extra_torque += stiffness_factor * (t.contact_rr * r + t.contact_rv * v);
-      t.extra_force += stiffness_factor * (t.contact_rv.transpose() * r + t.contact_vv * v);
+      const StiffContactTerms& c = contact_[k];
+      t.extra_torque += stiffness_factor * (c.rr * r + c.rv * v);
+      t.extra_force += stiffness_factor * (c.rv.transpose() * r + c.vv * v);
     }
   }
   // The tip clamp: its spring on the last link's rotation relative to the clamp, -K (r - r_clamp).
@@ -335,9 +335,10 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     Eigen::Matrix3d own_rv = c.half_moment[i] * skew(u) + cd * t.drag_rv;
     t.own_vv = c.translational[i] * identity - la * uu + cd * t.drag_vv;
     if (t.in_contact) {
-      own_rv += ck * t.contact_rv;
-      t.own_vv += ck * t.contact_vv;
-      a_rr += ck * t.contact_rr;
+      const StiffContactTerms& contact = contact_[k];
+      own_rv += ck * contact.rv;
+      t.own_vv += ck * contact.vv;
+      a_rr += ck * contact.rr;
     }
     t.own_vr = own_rv.transpose();
     a_rr += (c.own_transverse[i] + ck * t.geometric) * P + c.polar[i] * uu + cd * t.drag_rr;

@@ -46,9 +46,7 @@ struct StiffLinkTerms {
   /// force per v_base [N s/m] (force per omega is drag_rv^T).
   /// The seabed's damping adds to them.
   Eigen::Matrix3d drag_rr = Eigen::Matrix3d::Zero(), drag_rv = Eigen::Matrix3d::Zero(), drag_vv = Eigen::Matrix3d::Zero();
-  /// The seabed's stiffness over (rotation, base-end displacement), the same layout [N m/rad], [N/rad], [N/m].
-  Eigen::Matrix3d contact_rr = Eigen::Matrix3d::Zero(), contact_rv = Eigen::Matrix3d::Zero(), contact_vv = Eigen::Matrix3d::Zero();
-  bool in_contact = false;  ///< the contact blocks are not zero
+  bool in_contact = false;  ///< the link's seabed stiffness (StiffContactTerms) is not zero
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< u at the linearization
   double geometric = 0.0;  ///< G . u, the geometric stiffness across the link [N m/rad]
   Eigen::Vector3d extra_torque = Eigen::Vector3d::Zero();  ///< added to the right-hand side: about the base end [N m]
@@ -63,6 +61,13 @@ struct StiffLinkTerms {
   Eigen::Matrix3d own_vr = Eigen::Matrix3d::Zero(), own_vv = Eigen::Matrix3d::Zero();
   Eigen::Vector3d own_bias = Eigen::Vector3d::Zero();  ///< [N]
   double tension = 0.0;  ///< at the base end, -J_k . u_k, from the last solve() [N]
+};
+
+/// A link's seabed stiffness over (rotation, base-end displacement), laid out as the drag's damping
+/// [N m/rad], [N/rad], [N/m]. Kept apart from StiffLinkTerms: most links of most cables never touch, and
+/// the recursion's per-link terms stay as compact as without a seabed.
+struct StiffContactTerms {
+  Eigen::Matrix3d rr = Eigen::Matrix3d::Zero(), rv = Eigen::Matrix3d::Zero(), vv = Eigen::Matrix3d::Zero();
 };
 
 /// Terms and solver of the implicit step for one chain. Call linearize() after ChainDynamics::computeLoads(),
@@ -99,6 +104,8 @@ class StiffArticulatedBody {
   void solve(const ChainModel& model, const ChainData& data, double damping_weight, double stiffness_weight);
 
   const StiffLinkTerms& link(int k) const { return links_[k]; }
+  /// Link k's seabed stiffness (zero unless link(k).in_contact).
+  const StiffContactTerms& contact(int k) const { return contact_[k]; }
   /// d at the tip: the load's acceleration is tip_known_acc + tipDelta() [m/s^2].
   const Eigen::Vector3d& tipDelta() const { return tip_delta_; }
   /// A clamped tip's blocks on the last link's rotation relative to the clamp (zero unless clamped).
@@ -111,9 +118,10 @@ class StiffArticulatedBody {
 
  private:
   /// Link k's seabed stiffness and damping (added to its drag's) at the state of `data`.
-  void linearizeContact(const ChainModel& model, const ChainData& data, int k, StiffLinkTerms& t);
+  void linearizeContact(const ChainModel& model, const ChainData& data, int k, StiffLinkTerms& t, StiffContactTerms& contact);
 
   std::vector<StiffLinkTerms, Eigen::aligned_allocator<StiffLinkTerms>> links_;
+  std::vector<StiffContactTerms, Eigen::aligned_allocator<StiffContactTerms>> contact_;
   Eigen::Matrix3d load_drag_ = Eigen::Matrix3d::Zero();  ///< load drag's damping [N s/m]
   double coupling_stiffness_ = 0.0, coupling_damping_ = 0.0;  ///< of the PD coupling, when coupled
   /// The load's seabed contact: its normal spring and damper, its friction's secant damping [N/m], [N s/m].
