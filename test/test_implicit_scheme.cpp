@@ -26,22 +26,14 @@
 #include "cable_dynamics/simulation/stable_step.h"
 #include "cable_dynamics/simulation/time_schemes/linear_implicit.h"
 
+#include "link_rotation.h"
+
 using namespace cable_dynamics;
 
 namespace {
 
-const Eigen::Vector3d kDown = Eigen::Vector3d::UnitZ();
+const Eigen::Vector3d kDown = Eigen::Vector3d::UnitZ();  // paper +z
 
-double twistRate(const Eigen::Vector3d& omega, const Eigen::Vector3d& axis) {
-  const double denominator = 1.0 + axis.z();
-  return denominator > 1e-12 ? -omega.dot(kDown + axis) / denominator : -omega.dot(axis);
-}
-
-Eigen::Vector3d turned(const Eigen::Vector3d& u, const Eigen::Vector3d& turn) {
-  const double angle = turn.norm();
-  if (angle == 0.0) return u;
-  return Eigen::AngleAxisd(angle, turn / angle) * u;
-}
 
 /// Sets the simulator's state to x through the paper coordinates (the only public way in).
 void setState(CableSimulator& sim, const Eigen::VectorXd& x) {

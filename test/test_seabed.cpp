@@ -444,13 +444,13 @@ TEST(SeabedContact, TheHotPathsFlatBedSpecializationIsTheGeneralContact) {
   EXPECT_GT(touching, 5);
 }
 
-TEST(SeabedWinch, AWinchLaysTheCableOnTheBottomAndHaulsItBackWithTheBalanceClosed) {
-  // A 12 m tether (EI 5 N m^2) in water hangs 2 m onto the bottom 10 m below the winch, with a current along x; the
-  // winch pays out 8 m (the new cable piles onto the bottom, dragged by the current and the friction)
-  // and hauls it back in. Links added and removed on a cable part on the bottom: the balance (with the
-  // merges' energy and the contact's dissipation) stays within RK4's error, no step is retried, and the
-  // grounded length follows the deployed length.
-  CableSimulator sim(loadConfigString(
+namespace {
+
+/// A 12 m tether (EI 5 N m^2) in water hanging 2 m onto the bottom 10 m below the winch, with a current
+/// along x; the winch pays out 8 m from t = 0 and hauls it back in from t = 25 s. RK4 at 1 ms unless
+/// `overrides` say otherwise.
+CableParams tetherOntoTheBottom(const std::vector<std::string>& overrides) {
+  return loadConfigString(
       "cable: {links: 12, length: 12.0, diameter: 0.02, mass_per_length: 0.8,\n"
       "        stiffness: {model: bending, bending_rigidity: 5.0, torsional_rigidity: 2.0}}\n"
       "fluid: {current: [0.3, 0.0, 0.0]}\n"
@@ -458,7 +458,19 @@ TEST(SeabedWinch, AWinchLaysTheCableOnTheBottomAndHaulsItBackWithTheBalanceClose
       "initial: {mode: equilibrium}\n"
       "winch: {max_length: 24.0, min_length: 6.0, max_speed: 0.5, max_acceleration: 0.5, schedule: "
       "[{time: 0.0, speed: 0.4}, {time: 20.0, speed: 0.0}, {time: 25.0, speed: -0.4}, {time: 45.0, speed: 0.0}]}\n"
-      "simulation: {dt: 0.001}\n"));
+      "simulation: {dt: 0.001}\n",
+      overrides);
+}
+
+}  // namespace
+
+TEST(SeabedWinch, AWinchLaysTheCableOnTheBottomAndHaulsItBackWithTheBalanceClosed) {
+  // A 12 m tether (EI 5 N m^2) in water hangs 2 m onto the bottom 10 m below the winch, with a current along x; the
+  // winch pays out 8 m (the new cable piles onto the bottom, dragged by the current and the friction)
+  // and hauls it back in. Links added and removed on a cable part on the bottom: the balance (with the
+  // merges' energy and the contact's dissipation) stays within RK4's error, no step is retried, and the
+  // grounded length follows the deployed length.
+  CableSimulator sim(tetherOntoTheBottom({}));
   SimulationSnapshot s;
   sim.snapshot(s);
   const double grounded_start = s.chain.seabed.grounded_length;
@@ -540,15 +552,7 @@ TEST(SeabedImplicit, AWinchLaysTheTetherOnTheBottomAtTenMilliseconds) {
   // hauled back; against RK4 the grounded length at the end of the pay-out and after the haul-in.
   auto run = [](const std::string& integrator, double dt, double& grounded_paid_out, double& grounded_end,
                 int& added, int& retried) {
-    CableSimulator sim(loadConfigString(
-        "cable: {links: 12, length: 12.0, diameter: 0.02, mass_per_length: 0.8,\n"
-        "        stiffness: {model: bending, bending_rigidity: 5.0, torsional_rigidity: 2.0}}\n"
-        "fluid: {current: [0.3, 0.0, 0.0]}\n"
-        "seabed: {depth: 10.0, friction: {axial: 0.3, lateral: 0.6}}\n"
-        "initial: {mode: equilibrium}\n"
-        "winch: {max_length: 24.0, min_length: 6.0, max_speed: 0.5, max_acceleration: 0.5, schedule: "
-        "[{time: 0.0, speed: 0.4}, {time: 20.0, speed: 0.0}, {time: 25.0, speed: -0.4}, {time: 45.0, speed: 0.0}]}\n",
-        {"simulation.integrator=" + integrator, "simulation.dt=" + std::to_string(dt)}));
+    CableSimulator sim(tetherOntoTheBottom({"simulation.integrator=" + integrator, "simulation.dt=" + std::to_string(dt)}));
     SimulationSnapshot s;
     const long steps = std::lround(50.0 / dt);
     for (long i = 1; i <= steps; ++i) {

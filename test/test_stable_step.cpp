@@ -21,21 +21,12 @@
 #include "cable_dynamics/simulation/end_conditions.h"
 #include "cable_dynamics/simulation/stable_step.h"
 
+#include "link_rotation.h"
+
 using namespace cable_dynamics;
 
 namespace {
 
-const Eigen::Vector3d kDown = Eigen::Vector3d::UnitZ();
-
-double twistRate(const Eigen::Vector3d& omega, const Eigen::Vector3d& axis) {
-  const double denominator = 1.0 + axis.z();
-  return denominator > 1e-12 ? -omega.dot(kDown + axis) / denominator : -omega.dot(axis);
-}
-
-Eigen::Vector3d turned(const Eigen::Vector3d& u, const Eigen::Vector3d& turn) {
-  const double angle = turn.norm();
-  return angle == 0.0 ? u : Eigen::AngleAxisd(angle, turn / angle) * u;
-}
 
 std::complex<double> rk4Amplification(std::complex<double> z) {
   return 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));

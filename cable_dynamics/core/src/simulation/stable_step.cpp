@@ -288,9 +288,13 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
 void requireStableTimeStep(const CableParams& params, const LinkProperties& properties) {
   if (params.simulation.integrator != Integrator::kRk4) return;
   const StableStep s = estimateStableStep(params, properties);
-  if (params.simulation.dt <= s.limit) return;
+  // The message prints the limit to 6 digits, rounded down, so that the step it names is accepted as
+  // given (rounded to nearest, a copied 5.45554e-05 was 4e-11 s beyond the 5.455536e-05 s limit).
+  if (params.simulation.dt <= s.limit * (1.0 + 1e-9)) return;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(s.limit)) - 5.0);
+  const double shown = std::floor(s.limit / magnitude) * magnitude;
   std::ostringstream expected;
-  expected << "at most " << s.limit << " s for this cable with integrator rk4 (limited by " << s.mode
+  expected << "at most " << shown << " s for this cable with integrator rk4 (limited by " << s.mode
            << ", |lambda| = " << s.rate << " 1/s; recommended " << s.recommended
            << " s), or simulation.integrator: implicit (recommended dt " << s.implicit_recommended << " s)";
   std::ostringstream value;

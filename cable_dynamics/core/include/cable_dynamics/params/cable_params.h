@@ -21,7 +21,7 @@ enum class StiffnessModel {
 enum class Integrator {
   kRk4,           ///< classical fourth-order Runge-Kutta, explicit
   kSemiImplicit,  ///< linearized backward Euler in the angular velocities
-  kImplicit,      ///< linearly implicit theta step, O(n): stiff terms in the articulated-body recursion
+  kImplicit,      ///< linearly implicit ROS2 step, O(n): stiff terms in the articulated-body recursion
 };
 
 /// How the equations of motion are solved for the accelerations (dynamics/).
