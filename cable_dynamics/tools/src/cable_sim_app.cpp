@@ -26,10 +26,11 @@ constexpr double kMaxRetriedFraction = 0.01;
 constexpr double kMaxEnergyDrift = 1e-3;
 /// The same for a scheme judged at the samples (the implicit one), whose balance closes to second order,
 /// not to RK4's fourth: a rise beyond this fraction of the scale exits with status 5. Measured with
-/// `--sample 0.01` at the recommended steps: 4e-7 (armoured umbilical) and 4.8e-4 (soft tether) of the
-/// scale, 3.2e-3 for the TMS tether at 10 ms (its ROV's stiff coupling: the work's second-order error,
-/// its link ends within 0.8 mm of RK4's); an undamped kinked release at four times its recommended step,
-/// whose first steps put in 13 J: 3.6e-2 (test_unreliable_runs.py).
+/// `--sample 0.01` over the presets' runs at their steps: 2.9e-7 (armoured umbilical) and 2.0e-4 (soft
+/// tether) of the scale, 1.8e-3 for the TMS tether at 10 ms (its ROV's stiff coupling damper: the work's
+/// second-order error, 4.2e-4 at 5 ms; its link ends within 0.8 mm of RK4's); an undamped kinked
+/// release at four times its recommended step, whose first steps put in 13 J: 3.6e-2
+/// (test_unreliable_runs.py).
 constexpr double kMaxSampledRise = 1e-2;
 
 /// The energy balance (mechanical energy + dissipated - work input) over the samples of a run, against
