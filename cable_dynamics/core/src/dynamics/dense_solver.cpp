@@ -4,16 +4,11 @@
 
 #include <Eigen/Geometry>
 
+#include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/dynamics/fluid.h"
 
 namespace cable_dynamics {
 namespace {
-
-inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
 
 /// Moment `order` (0, 1, 2) about the base end of link k's translational inertia: the integral of
 /// s^order A ds (A = m' I + m_a' (I - u u^T)) plus the attachments' sum (m_p + m_pa) s_p^order I [kg m^order].

@@ -25,6 +25,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/hot_path.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
@@ -39,12 +40,6 @@
 
 namespace cable_dynamics {
 namespace {
-
-inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
 
 inline Eigen::Matrix3d symmetrized(const Eigen::Matrix3d& m) { return 0.5 * (m + m.transpose()); }
 

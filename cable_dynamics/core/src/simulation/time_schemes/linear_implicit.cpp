@@ -1,3 +1,4 @@
+#include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/simulation/time_schemes/linear_implicit.h"
 
 #include <cassert>
@@ -9,14 +10,6 @@
 
 namespace cable_dynamics {
 namespace {
-
-const Eigen::Vector3d kDown = Eigen::Vector3d::UnitZ();
-
-/// sigma' for a link of axis u turning at omega: -omega.(e_z + u)/(1 + u_z) (kinematics.cpp).
-inline double twistRate(const Eigen::Vector3d& omega, const Eigen::Vector3d& axis) {
-  const double denominator = 1.0 + axis.z();
-  return denominator > 1e-12 ? -omega.dot(kDown + axis) / denominator : -omega.dot(axis);
-}
 
 /// u turned by the rotation vector `turn` [rad] (Rodrigues), exactly a rotation at any angle:
 /// u cos a + (t x u) sin(a)/a + t (t.u) (1 - cos a)/a^2 with t = turn, a = |t|. A step turns a link by
