@@ -32,8 +32,9 @@ CABLE_HOT_PATH bool finiteAngularAccelerations(const LinkBlocks& links, int firs
   return std::isfinite(total);
 }
 
-}  // namespace
-
+/// The energy the winch pays out with the cable per metre [J/m]: kinetic energy per length of the
+/// material at the base end (translation, and the rotation of the section) plus its potential energy
+/// there. The deployed cable's energy grows by this times the pay-out speed, besides the work done on it.
 double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, const Vec3& exit_velocity) {
   const int first = model.firstLink();
   const LinkConstants& c = model.of(first);
@@ -48,6 +49,17 @@ double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, co
   return kinetic + potential;
 }
 
+}  // namespace
+
+double endsInputPower(const ChainModel& model, const ChainData& data, const EndInputs& ends,
+                      const Eigen::Vector3d& base_force) {
+  const int first = model.firstLink();
+  const Vec3 exit_velocity = data.links.of(first).base_vel[LinkBlocks::lane(first)];
+  double power = base_force.dot(toEigen(exit_velocity)) + data.coupling.dot(data.tip_velocity) +
+                 data.clamp_torque.dot(data.clamp_omega) + data.tip_clamp_torque.dot(data.tip_clamp_omega);
+  if (ends.winch) power += ends.winch_speed * paidOutEnergyPerLength(model, data, exit_velocity);
+  return power;
+}
 
 ChainDynamics::ChainDynamics(const CableParams& params) : model_(params), data_(model_) {
   data_.current = CurrentField(params.fluid);
@@ -71,14 +83,9 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
     if (!solveDense(model_, data_)) return false;  // its workspace: allocated by ChainData for this formulation
   }
   if (!finiteAngularAccelerations(data_.links, model_.firstBlock())) return false;
-  // The base does work through the force it holds the base link's end with, at that end's material
-  // velocity (with a winch, the paid-out cable's), and the paid-out cable brings its own energy.
-  const int first = model_.firstLink();
-  const Vec3 exit_velocity = data_.links.of(first).base_vel[LinkBlocks::lane(first)];
-  // A clamp turning with the vessel works through the torque it holds the base link with.
-  data_.input_power = data_.joint_force.col(first).dot(toEigen(exit_velocity)) + data_.coupling.dot(data_.tip_velocity) +
-                      data_.clamp_torque.dot(data_.clamp_omega) + data_.tip_clamp_torque.dot(data_.tip_clamp_omega);
-  if (ends.winch) data_.input_power += ends.winch_speed * paidOutEnergyPerLength(model_, data_, exit_velocity);
+  // What the base (through the force it holds the base link's end with), the coupling, the clamps and a
+  // winch's paid-out cable put in.
+  data_.input_power = endsInputPower(model_, data_, ends, data_.joint_force.col(model_.firstLink()));
   return true;
 }
 

@@ -4,8 +4,8 @@
 
 #include <Eigen/Geometry>
 
-#include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/link_rates.h"
 
 namespace cable_dynamics {
 namespace {

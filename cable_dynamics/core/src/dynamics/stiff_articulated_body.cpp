@@ -25,9 +25,9 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
-#include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/hot_path.h"
+#include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
 
 // Inline every Eigen call of the two hot functions: without it GCC calls the 3x3 products out of line
@@ -42,6 +42,12 @@ namespace cable_dynamics {
 namespace {
 
 inline Eigen::Matrix3d symmetrized(const Eigen::Matrix3d& m) { return 0.5 * (m + m.transpose()); }
+
+/// The unit bisector of two axes, or `fallback` where they are opposite (the joint blocks' mean axis).
+inline Eigen::Vector3d meanAxis(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& fallback) {
+  const Eigen::Vector3d sum = a + b;
+  return sum.norm() > 1e-9 ? Eigen::Vector3d(sum.normalized()) : fallback;
+}
 
 /// Spring (or damper) block of a joint with mean axis m: `across` for bending, `about` for twist.
 inline Eigen::Matrix3d jointBlock(double across, double about, const Eigen::Vector3d& m) {
@@ -105,8 +111,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
     // here: the simulator refuses them with this integrator).
     if (bending) {
       const Eigen::Vector3d prev = k > first ? blocks.get(&LinkBlock::u, k - 1) : data.clamp_axis;
-      const Eigen::Vector3d sum = prev + u;
-      const Eigen::Vector3d mean = sum.norm() > 1e-9 ? Eigen::Vector3d(sum.normalized()) : u;
+      const Eigen::Vector3d mean = meanAxis(prev, u, u);
       t.joint_stiffness = jointBlock(p.stiffness_elevation(k), p.stiffness_torsion(k), mean);
       t.joint_damping = jointBlock(p.damping_elevation(k), p.damping_torsion(k), mean);
     }
@@ -186,8 +191,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   }
   // A clamped tip (joint_torques.cpp): bend only, across the mean of the last axis and the clamp's.
   if (p.tip_clamp_stiffness > 0.0 || p.tip_clamp_damping > 0.0) {
-    const Eigen::Vector3d sum = blocks.get(&LinkBlock::u, n - 1) + data.tip_clamp_axis;
-    const Eigen::Vector3d mean = sum.norm() > 1e-9 ? Eigen::Vector3d(sum.normalized()) : data.tip_clamp_axis;
+    const Eigen::Vector3d mean = meanAxis(blocks.get(&LinkBlock::u, n - 1), data.tip_clamp_axis, data.tip_clamp_axis);
     tip_clamp_stiffness_ = jointBlock(p.tip_clamp_stiffness, 0.0, mean);
     tip_clamp_damping_ = jointBlock(p.tip_clamp_damping, 0.0, mean);
   }

@@ -41,13 +41,16 @@ struct ChainOutputs {
   SeabedReport seabed;            ///< contact forces, grounded length, touchdown (with a seabed)
 };
 
-/// The model of one cable and the workspace its evaluations write.
-/// The energy a winch pays out with the cable per metre [J/m]: kinetic energy per length of the material
-/// at the base end (translation, and the rotation of the section) plus its potential energy there, at
-/// the exit velocity `exit_velocity` [m/s]. The deployed cable's energy grows by this times the pay-out
-/// speed, besides the work done on it (both integrators' power balance add it).
-double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, const Vec3& exit_velocity);
+/// The power the ends put into the cable at the kinematics in `data` [W]: the base's force on the base
+/// link's end, `base_force` [N], at that end's material velocity (with a winch, the paid-out cable's),
+/// the load coupling at the tip's velocity, the turning clamps' torques at their angular velocities, and
+/// with a winch the energy the paid-out cable brings (its energy per metre at the exit times the
+/// pay-out speed). Both the explicit evaluation (ChainDynamics::solve) and the implicit step's stages
+/// (their own base force) take it from here.
+double endsInputPower(const ChainModel& model, const ChainData& data, const EndInputs& ends,
+                      const Eigen::Vector3d& base_force);
 
+/// The model of one cable and the workspace its evaluations write.
 class ChainDynamics {
  public:
   explicit ChainDynamics(const CableParams& params);

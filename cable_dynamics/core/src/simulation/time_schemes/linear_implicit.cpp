@@ -1,4 +1,3 @@
-#include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/simulation/time_schemes/linear_implicit.h"
 
 #include <cassert>
@@ -7,6 +6,7 @@
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/joint_torques.h"
+#include "cable_dynamics/dynamics/link_rates.h"
 
 namespace cable_dynamics {
 namespace {
@@ -41,19 +41,14 @@ inline void turnFrame(Eigen::VectorXd& x, int k, const Eigen::Vector3d& phi) {
   x.segment<3>(StateLayout::axis(k)) = end;
 }
 
-}  // namespace
-
-double LinearImplicitScheme::gammaFor(double rho_infinity) {
-  // R(inf) = 1 - 2/gamma + 1/(2 gamma^2) = -rho_inf: (1 + rho) gamma^2 - 2 gamma + 1/2 = 0, the smaller
-  // root (the smaller error constant): rho = 0 gives 1 - 1/sqrt(2), rho = 1 gives 1/2.
+/// The stages' gamma for a spectral radius at infinity rho_inf in [0, 1]: R(inf) = 1 - 2/gamma +
+/// 1/(2 gamma^2) = -rho_inf, i.e. (1 + rho) gamma^2 - 2 gamma + 1/2 = 0, the smaller root (the smaller
+/// error constant): rho = 0 gives 1 - 1/sqrt(2), rho = 1 gives 1/2.
+double gammaFor(double rho_infinity) {
   return (1.0 - std::sqrt(0.5 * (1.0 - rho_infinity))) / (1.0 + rho_infinity);
 }
 
-std::complex<double> LinearImplicitScheme::amplification(double rho_infinity, std::complex<double> z) {
-  const double g = gammaFor(rho_infinity);
-  const std::complex<double> denominator = (1.0 - g * z) * (1.0 - g * z);
-  return (1.0 + (1.0 - 2.0 * g) * z + (g * g - 2.0 * g + 0.5) * z * z) / denominator;
-}
+}  // namespace
 
 LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity)
     : gamma_(gammaFor(rho_infinity)), solver_(links) {
@@ -80,11 +75,8 @@ LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainMod
   }
   const Eigen::Vector3d tip_acc = data.tip_known_acc + solver_.tipDelta();
   added_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);
-  const Eigen::Vector3d exit_velocity = data.links.get(&LinkBlock::base_vel, first);
-  double input_power = solver_.baseForce().dot(exit_velocity) + data.coupling.dot(data.tip_velocity) +
-                       data.clamp_torque.dot(data.clamp_omega) + data.tip_clamp_torque.dot(data.tip_clamp_omega);
-  if (ends.winch) input_power += ends.winch_speed * paidOutEnergyPerLength(model, data, toVec3(exit_velocity));
-  return {input_power, data.drag_power + added_power + damperPower(model, data) - data.contact_dissipation};
+  return {endsInputPower(model, data, ends, solver_.baseForce()),
+          data.drag_power + added_power + damperPower(model, data) - data.contact_dissipation};
 }
 
 bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,

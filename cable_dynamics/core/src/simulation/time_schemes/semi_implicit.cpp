@@ -1,4 +1,3 @@
-#include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/simulation/time_schemes/semi_implicit.h"
 
 #include <cassert>
@@ -7,6 +6,7 @@
 
 #include "cable_dynamics/dynamics/dense_solver.h"
 #include "cable_dynamics/dynamics/joint_torques.h"
+#include "cable_dynamics/dynamics/link_rates.h"
 
 namespace cable_dynamics {
 namespace {

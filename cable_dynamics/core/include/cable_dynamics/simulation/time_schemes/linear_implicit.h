@@ -4,8 +4,6 @@
 ///        spectral radius), each stage one pass of the articulated-body recursion with the stiff terms
 ///        folded into its inertias (stiff_articulated_body.h; docs/MODEL.md section 6, "Implicit integrator").
 
-#include <complex>
-
 #include <Eigen/Core>
 
 #include "cable_dynamics/dynamics/stiff_articulated_body.h"
@@ -15,14 +13,16 @@ namespace cable_dynamics {
 
 /// ROS2 (Verwer, Spee, Blom and Hundsdorfer, SIAM J. Sci. Comput. 20, 1999) on the links' rotations and
 /// angular velocities y = (phi, w), with the matrix W = I - gamma h A and A the Jacobian of
-/// stiff_articulated_body.h (joint springs and dampers, drag, geometric stiffness, the load's coupling):
+/// stiff_articulated_body.h (joint springs and dampers, drag, geometric stiffness, the seabed, a clamped
+/// tip, the load's coupling):
 ///   (I - gamma h A) k1 = h F(y_n),
 ///   (I - gamma h A) k2 = h F(y_n + k1) - 2 k1,   y_{n+1} = y_n + 3/2 k1 + 1/2 k2.
 /// Both stages solve (M + gamma h D + gamma^2 h^2 K) a = rhs by one O(n) recursion; the rotations live on
 /// the links' frames (phi from x_n's, turned exactly). Properties that made it the choice:
 /// - second order for any A (a W-method): the approximate bending Jacobian, the tension stiffness read from
 ///   the last solve and the Jacobian reused from the last step's second stage cost no order;
-/// - A-stable, with R(inf) = -rho_inf through gamma = (1 - sqrt((1 - rho_inf) / 2)) / (1 + rho_inf):
+/// - A-stable on y' = lambda y (z = h lambda, exact A), with the amplification
+///   R(z) = (1 + (1 - 2 gamma) z + (gamma^2 - 2 gamma + 1/2) z^2) / (1 - gamma z)^2 and R(inf) = -rho_inf through gamma = (1 - sqrt((1 - rho_inf) / 2)) / (1 + rho_inf):
 ///   rho_inf = 0 (gamma = 1 - 1/sqrt 2) is L-stable, rho_inf = 1 (gamma = 1/2) is the trapezoidal rule on
 ///   linear problems, which damps nothing and which a stiff, undamped nonlinear cable can drive unstable.
 /// Cost: two evaluations of the loads, one linearization and two recursions per step; no heap allocation.
@@ -35,12 +35,6 @@ class LinearImplicitScheme : public TimeScheme {
   /// scheme's order under strong nonlinearity: not judged per step.
   bool balancesEnergy() const override { return false; }
 
-  /// The stages' gamma for a spectral radius at infinity rho_inf in [0, 1].
-  static double gammaFor(double rho_infinity);
-  /// The step's amplification y_{n+1} / y_n for y' = lambda y, z = h lambda (exact A):
-  /// R(z) = (1 + (1 - 2 gamma) z + (gamma^2 - 2 gamma + 1/2) z^2) / (1 - gamma z)^2.
-  static std::complex<double> amplification(double rho_infinity, std::complex<double> z);
-  double gamma() const { return gamma_; }
   /// The next first stage linearizes afresh (its geometric stiffness from the external loads) instead of
   /// reusing the last second stage's Jacobians (a reset or a changed input).
   void forget() override { tensions_known_ = false; }
