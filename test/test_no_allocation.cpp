@@ -1,18 +1,94 @@
-// No heap allocation in a simulation step, for both formulations and every integrator: the core is
-// compiled with EIGEN_RUNTIME_NO_MALLOC (test/tests.cmake) and Eigen's allocator is switched off around
-// the calls, so any Eigen allocation inside aborts the test.
+// No heap allocation in a simulation step, for both formulations and every integrator. Two guards:
+// - every allocation of the test binary is counted while a step runs: malloc, calloc, realloc,
+//   posix_memalign, aligned_alloc and memalign are replaced in this program (glibc lets a program replace
+//   them: "Replacing malloc" in its manual) by counters that forward to glibc's own allocator, and the
+//   global operator new (std::vector, std::string, `new`) reaches them through libstdc++'s malloc call;
+//   a step must count zero;
+// - the core is compiled with EIGEN_RUNTIME_NO_MALLOC (test/tests.cmake) and Eigen's allocator is switched
+//   off around the calls, so an Eigen allocation aborts at once (its stack names the culprit).
 #ifndef EIGEN_RUNTIME_NO_MALLOC
 #error "build this test with EIGEN_RUNTIME_NO_MALLOC"
 #endif
+
+#include <atomic>
+#include <cerrno>
+#include <cstddef>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/params/config_loader.h"
 
+// glibc's allocator under its exported internal names (GLIBC_2.2.5): what the replacements forward to.
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* p, std::size_t size);
+void* __libc_memalign(std::size_t alignment, std::size_t size);
+void __libc_free(void* p);
+}
+
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+inline void count() {
+  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+}
+}  // namespace
+
+extern "C" {
+void* malloc(std::size_t size) {
+  count();
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t n, std::size_t size) {
+  count();
+  return __libc_calloc(n, size);
+}
+void* realloc(void* p, std::size_t size) {
+  count();
+  return __libc_realloc(p, size);
+}
+void free(void* p) { __libc_free(p); }
+void* memalign(std::size_t alignment, std::size_t size) {
+  count();
+  return __libc_memalign(alignment, size);
+}
+void* aligned_alloc(std::size_t alignment, std::size_t size) {
+  count();
+  return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** out, std::size_t alignment, std::size_t size) {
+  count();
+  if (alignment % sizeof(void*) != 0 || (alignment & (alignment - 1)) != 0) return EINVAL;
+  void* p = __libc_memalign(alignment, size);
+  if (p == nullptr) return ENOMEM;
+  *out = p;
+  return 0;
+}
+}  // extern "C"
+
 using namespace cable_dynamics;
 
 namespace {
+
+/// Both guards on between start() and stop(); stop() returns the allocations counted in between.
+struct AllocationGuard {
+  void start() {
+    g_allocations = 0;
+    g_counting = true;
+    Eigen::internal::set_is_malloc_allowed(false);
+  }
+  long stop() {
+    Eigen::internal::set_is_malloc_allowed(true);
+    g_counting = false;
+    return g_allocations.load();
+  }
+};
 
 void expectNoAllocation(const std::vector<std::string>& overrides) {
   CableParams p = loadConfigString(R"(
@@ -26,12 +102,14 @@ initial: {elevation: 0.3}
   CableSimulator sim(p);
   ASSERT_TRUE(sim.step().ok);  // first step outside the guard (nothing is expected to allocate, though)
   Eigen::VectorXd xdot(sim.dynamics().stateSize());
-  Eigen::internal::set_is_malloc_allowed(false);
+  AllocationGuard guard;
+  guard.start();
   bool ok = true;
   for (int i = 0; i < 20; ++i) ok = sim.step().ok && ok;
   ok = sim.dynamics().derivative(sim.state(), EndInputs(), xdot) && ok;
-  Eigen::internal::set_is_malloc_allowed(true);
+  const long allocations = guard.stop();
   EXPECT_TRUE(ok);
+  EXPECT_EQ(allocations, 0) << "heap allocations in 20 steps and a derivative";
 }
 
 }  // namespace
@@ -48,11 +126,13 @@ TEST(NoAllocation, StepAfterARetune) {
   CableSimulator sim(loadConfigString(cable));
   ASSERT_TRUE(sim.step().ok);
   sim.retune(loadConfigString(cable, {"fluid.drag_normal=2.0", "fluid.added_mass=0.5", "load.coupling.damping=100"}));
-  Eigen::internal::set_is_malloc_allowed(false);
+  AllocationGuard guard;
+  guard.start();
   bool ok = true;
   for (int i = 0; i < 20; ++i) ok = sim.step().ok && ok;
-  Eigen::internal::set_is_malloc_allowed(true);
+  const long allocations = guard.stop();
   EXPECT_TRUE(ok);
+  EXPECT_EQ(allocations, 0) << "heap allocations in the 20 steps after a retune";
 }
 
 TEST(NoAllocation, RecursiveRk4StepInADepthProfile) {
@@ -116,20 +196,22 @@ winch: {max_length: 40.0, max_speed: 2.0, max_acceleration: 100.0, speed: 2.0}
   p.simulation.integrator = std::string(integrator) == "rk4" ? Integrator::kRk4 : Integrator::kImplicit;
   CableSimulator sim(p);
   ASSERT_TRUE(sim.step().ok);
-  Eigen::internal::set_is_malloc_allowed(false);
+  AllocationGuard guard;
+  guard.start();
   bool ok = true;
   for (int i = 0; i < 3000; ++i) ok = sim.step().ok && ok;
   sim.commandWinchSpeed(-2.0);
   for (int i = 0; i < 3000; ++i) ok = sim.step().ok && ok;
-  Eigen::internal::set_is_malloc_allowed(true);
+  const long allocations = guard.stop();
   EXPECT_TRUE(ok);
+  EXPECT_EQ(allocations, 0) << "heap allocations while paying out and hauling in";
   EXPECT_GE(sim.linksAdded(), 2);
   EXPECT_GE(sim.linksRemoved(), 2);
   }
 }
 
 TEST(NoAllocation, GuardIsActive) {
-  // The guard itself works: an allocation under it aborts (checked in a death test).
+  // The Eigen guard itself works: an allocation under it aborts (checked in a death test).
   EXPECT_DEATH(
       {
         Eigen::internal::set_is_malloc_allowed(false);
@@ -137,4 +219,26 @@ TEST(NoAllocation, GuardIsActive) {
         v.setZero();
       },
       "");
+}
+
+// The counter sees each way a step could allocate: a std::vector, a std::string longer than its inline
+// buffer, `new`, std::make_shared, malloc, an Eigen vector (Eigen's guard off here, so only counted).
+TEST(NoAllocation, CounterSeesEveryAllocator) {
+  const auto counted = [](auto&& allocate) {
+    g_allocations = 0;
+    g_counting = true;
+    allocate();
+    g_counting = false;
+    return g_allocations.load();
+  };
+  EXPECT_GE(counted([] { std::vector<double> v(10, 1.0); EXPECT_EQ(v.size(), 10u); }), 1);
+  EXPECT_GE(counted([] { std::string s(100, 'x'); EXPECT_EQ(s.size(), 100u); }), 1);
+  EXPECT_GE(counted([] { std::unique_ptr<int> p(new int(3)); EXPECT_EQ(*p, 3); }), 1);
+  EXPECT_GE(counted([] { auto p = std::make_shared<double>(2.0); EXPECT_EQ(*p, 2.0); }), 1);
+  EXPECT_GE(counted([] { void* p = std::malloc(64); EXPECT_NE(p, nullptr); std::free(p); }), 1);
+  EXPECT_GE(counted([] { Eigen::VectorXd v = Eigen::VectorXd::Ones(100); EXPECT_EQ(v.sum(), 100.0); }), 1);
+  // And nothing where nothing is allocated (a fixed-size Eigen vector, on the stack).
+  double sum = 0.0;
+  EXPECT_EQ(counted([&sum] { Eigen::Vector3d v(1, 2, 3); sum = v.sum(); }), 0);
+  EXPECT_EQ(sum, 6.0);
 }
