@@ -96,7 +96,7 @@ TEST(Winch, ConfigAddsTheDrumsSlotsInFrontOfTheDeployedCable) {
 
 // A load lowered at a constant speed: once the speed is reached, the line pull is the submerged weight
 // of what hangs below the winch less the drag at that speed (the load's, and the skin friction along
-// the cable, 1/2 rho C_t pi d v^2 per metre), within 1 %; in air, the weight alone.
+// the cable, 1/2 rho C_t pi d v^2 per metre), to rounding; in air, the weight alone.
 TEST(Winch, LoweringALoadAtConstantSpeedPullsItsQuasiStaticLine) {
   for (const double density : {0.0, 1025.0}) {
     const double speed = 0.5;
@@ -126,9 +126,13 @@ TEST(Winch, LoweringALoadAtConstantSpeedPullsItsQuasiStaticLine) {
     std::cout << "density " << density << ": line pull off by at most " << 100.0 * worst << " %, length by "
               << length_error << " m, mass by " << mass_error << " kg; links added " << sim.linksAdded()
               << ", deployed " << snap.deployed_length << " m" << std::endl;
-    EXPECT_LT(worst, 0.01);
-    EXPECT_LT(length_error, 1e-6);
-    EXPECT_LT(mass_error, 1e-9);
+    // The cable hangs straight and the speed is constant: the balance is exact up to rounding. Measured:
+    // line pull 8.3e-16 relative (the simulation without skin friction is off by 0.35 % in water, which
+    // the former 1 % passed), length 1.1e-10 m (the speed summed over 60000 steps), mass 3.6e-15 kg;
+    // about 6x above.
+    EXPECT_LT(worst, 5e-15);
+    EXPECT_LT(length_error, 7e-10);  // [m]
+    EXPECT_LT(mass_error, 2e-14);    // [kg]
     EXPECT_GT(sim.linksAdded(), 10);
     EXPECT_LT(sim.energyDrift(), 1e-3);
     EXPECT_EQ(sim.retriedSteps(), 0);
@@ -190,57 +194,85 @@ TEST(Winch, EnergyBalanceHoldsWithTheWinchsWorkCounted) {
   EXPECT_EQ(sim.retriedSteps(), 0);
 }
 
+namespace {
+
+/// The line pull's largest relative jump from one step to the next while a cable is paid out 20 m at
+/// `speed` [m/s] and hauled back in, in a current: in the steps where a link is added, where one is
+/// removed, and in the other steps at a steady winch speed.
+struct PullJumps {
+  double added = 0.0, removed = 0.0, steady = 0.0;  // [-], relative to the line pull
+  int links_added = 0, links_removed = 0;
+  long retried = 0;
+};
+
+PullJumps linePullJumps(const char* stiffness, double speed) {
+  const CableParams p = loadConfigString(
+      "cable: {links: 10, length: 20.0, diameter: 0.025, mass_per_length: 0.6}\n"
+      "load: {mass: 50.0, volume: 0.02, drag_area: 0.3}\n"
+      "fluid: {current: [0.3, 0.0, 0.0]}\n"
+      "winch: {max_length: 45.0, max_speed: 2.0, max_acceleration: 1.0}\n"
+      "initial: {mode: equilibrium}\n"
+      "simulation: {dt: 0.001}\n",
+      {std::string("cable.stiffness=") + stiffness});
+  CableSimulator sim(p);
+  PullJumps out;
+  run(sim, 5.0);
+  SimulationSnapshot snap;
+  sim.snapshot(snap);
+  double previous = snap.line_pull;
+  const double travel = 20.0;  // [m] out, then back in
+  for (const double v : {speed, -speed}) {
+    sim.commandWinchSpeed(v);
+    const long steps = std::lround((travel / speed + 2.0) / sim.dt());
+    for (long i = 0; i < steps; ++i) {
+      const int first = sim.firstLink();
+      EXPECT_TRUE(sim.step().ok) << "at t = " << sim.time();
+      sim.snapshot(snap);
+      const double jump = std::abs(snap.line_pull - previous) / snap.line_pull;
+      if (sim.firstLink() < first) {
+        out.added = std::max(out.added, jump);
+      } else if (sim.firstLink() > first) {
+        out.removed = std::max(out.removed, jump);
+      } else if (sim.winch().motion().acceleration == 0.0) {  // not where the winch's acceleration changes
+        out.steady = std::max(out.steady, jump);
+      }
+      previous = snap.line_pull;
+    }
+  }
+  out.links_added = sim.linksAdded();
+  out.links_removed = sim.linksRemoved();
+  out.retried = sim.retriedSteps();
+  std::cout << stiffness << ", " << speed << " m/s: " << out.links_added << " links added, " << out.links_removed
+            << " removed; the line pull jumps by at most " << 100.0 * out.added << " % where one is added, "
+            << 100.0 * out.removed << " % where one is removed, " << 100.0 * out.steady
+            << " % in any other step at a steady speed" << std::endl;
+  return out;
+}
+
+const char* const kLimp = "{model: paper}";
+const char* const kStiff = "{model: bending, bending_rigidity: 20.0, torsional_rigidity: 20.0}";
+
+}  // namespace
+
 // Adding a link at the winch keeps every material point's position and velocity (the split is exact in
 // the state), but where the base link was rigid there is now a joint: the forces, and with them the line
-// pull, change in that step. Removing one straightens the kink between the two links it merges. Neither
-// may jolt the line pull: in a slow pay-out and haul-in in a current, it jumps at a change by less than
-// 2 % of itself, for a limp cable and for a stiff one clamped at the base (EI = GJ = 20 N m^2).
-TEST(Winch, AddingAndRemovingLinksDoesNotJoltTheLinePull) {
-  for (const char* stiffness : {"{model: paper}", "{model: bending, bending_rigidity: 20.0, torsional_rigidity: 20.0}"}) {
+// pull, change in that step. Removing one straightens the kink between the two links it merges. In a
+// pay-out and haul-in in a current, at 0.1 and 1 m/s, for a limp cable and for a stiff one clamped at the
+// base (EI = GJ = 20 N m^2), the line pull jumps in the step of a change by less than 2 % of itself (the
+// requirement; measured at most 0.37 % at 0.1 m/s and 1.15 % at 1 m/s where a link is added, 0.003 % where
+// one is removed), and by less than 0.1 % in any other step at a steady speed (measured 0.015 % at
+// 0.1 m/s, 0.030 % at 1 m/s: 3x to 7x above). What this does not check: the dip that follows an added
+// link over the next half second (20-35 % on config/rov_dive.yaml), issue 27's sawtooth, open.
+TEST(Winch, AddingAndRemovingLinksDoesNotJumpTheLinePullInOneStep) {
+  for (const char* stiffness : {kLimp, kStiff}) {
     for (const double speed : {0.1, 1.0}) {
-      const CableParams p = loadConfigString(
-          "cable: {links: 10, length: 20.0, diameter: 0.025, mass_per_length: 0.6}\n"
-          "load: {mass: 50.0, volume: 0.02, drag_area: 0.3}\n"
-          "fluid: {current: [0.3, 0.0, 0.0]}\n"
-          "winch: {max_length: 45.0, max_speed: 2.0, max_acceleration: 1.0}\n"
-          "initial: {mode: equilibrium}\n"
-          "simulation: {dt: 0.001}\n",
-          {std::string("cable.stiffness=") + stiffness});
-      CableSimulator sim(p);
-      run(sim, 5.0);
-      SimulationSnapshot snap;
-      sim.snapshot(snap);
-      double previous = snap.line_pull, worst_added = 0.0, worst_removed = 0.0, worst_step = 0.0;
-      const double travel = 20.0;  // [m] out, then back in
-      for (const double v : {speed, -speed}) {
-        sim.commandWinchSpeed(v);
-        const long steps = std::lround((travel / speed + 2.0) / sim.dt());
-        for (long i = 0; i < steps; ++i) {
-          const int first = sim.firstLink();
-          ASSERT_TRUE(sim.step().ok);
-          sim.snapshot(snap);
-          const double jump = std::abs(snap.line_pull - previous) / snap.line_pull;
-          if (sim.firstLink() < first) {
-            worst_added = std::max(worst_added, jump);
-          } else if (sim.firstLink() > first) {
-            worst_removed = std::max(worst_removed, jump);
-          } else if (sim.winch().motion().acceleration == 0.0) {  // not where the winch's acceleration changes
-            worst_step = std::max(worst_step, jump);
-          }
-          previous = snap.line_pull;
-        }
-      }
-      std::cout << stiffness << ", " << speed << " m/s: " << sim.linksAdded() << " links added, "
-                << sim.linksRemoved() << " removed; the line pull jumps by at most " << 100.0 * worst_added
-                << " % where one is added, " << 100.0 * worst_removed << " % where one is removed, "
-                << 100.0 * worst_step << " % in any other step at a steady speed" << std::endl;
-      EXPECT_GE(sim.linksAdded(), 8);
-      EXPECT_GE(sim.linksRemoved(), 8);
-      if (speed <= 0.1) {
-        EXPECT_LT(worst_added, 0.02);
-        EXPECT_LT(worst_removed, 0.02);
-      }
-      EXPECT_EQ(sim.retriedSteps(), 0);
+      const PullJumps j = linePullJumps(stiffness, speed);
+      EXPECT_GE(j.links_added, 8);
+      EXPECT_GE(j.links_removed, 8);
+      EXPECT_LT(j.added, 0.02) << stiffness << " at " << speed << " m/s";
+      EXPECT_LT(j.removed, 2e-4) << stiffness << " at " << speed << " m/s";
+      EXPECT_LT(j.steady, 1e-3) << stiffness << " at " << speed << " m/s";
+      EXPECT_EQ(j.retried, 0);
     }
   }
 }
