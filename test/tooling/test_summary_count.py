@@ -1,5 +1,6 @@
-"""scripts/test_summary.py, the suite's summary line, on result files written as gtest, pytest, rostest and
-catkin write them (the formats copied from files of this suite's own run): each test case counted once,
+"""scripts/test_summary.py, the suite's summary line, on result files written as gtest 1.12 (Debian 12),
+pytest, rostest (rostest/runner.py: one RosTest entry per <test> tag) and catkin's run_tests.py (MISSING-*.xml)
+write them: each test case counted once,
 rostest's wrapper entries not at all unless they failed, parameter variations said, and the exit status
 non-zero on any failure, error, unreadable file or empty folder."""
 import os
