@@ -84,9 +84,8 @@ catkin_add_gtest(test_mujoco_reference test/test_mujoco_reference.cpp test/refer
 target_include_directories(test_mujoco_reference PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/test ${MUJOCO_INCLUDE_DIR})
 target_link_libraries(test_mujoco_reference cable_dynamics_core ${MUJOCO_LIBRARY} ${GTEST_MAIN_LIBRARIES})
 
-cable_add_pytest(presets test/test_presets.py
-  CABLE_SIM_BIN=$<TARGET_FILE:cable_sim> CABLE_MODEL_BIN=$<TARGET_FILE:cable_model>)
-add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim cable_model)
+cable_add_pytest(presets test/test_presets.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
+add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim)
 # The Python module (cable_dynamics/python/): run in the devel space's environment, and once more through
 # a fresh shell that sources its setup.bash, as the README's example is run.
 cable_add_pytest(python_bindings test/test_python_bindings.py
