@@ -321,11 +321,15 @@ TEST(Attachments, LazyWaveMatchesThePiecewiseCatenaryAndFloatsLiftByTheirBuoyanc
             << pull.norm() << ", error " << 100 * pull_error << " %), nodes within " << worst_node
             << " m; sag bottom " << sag << " m (" << sag_reference << "), hump top " << hump << " m (" << hump_reference
             << ")\n";
-  EXPECT_LT(base_error, 0.005);
-  EXPECT_LT(pull_error, 0.005);
-  EXPECT_LT(worst_node, 0.005 * 100.0);
-  EXPECT_NEAR(hump, hump_reference, 0.005 * std::abs(hump_reference));
-  EXPECT_NEAR(sag, sag_reference, 0.005 * std::abs(sag_reference));
+  // The chain of 100 one-metre links against the continuous shooting reference: the gap is the chain's
+  // discretization (second order in the link length), not the solvers' (1e-9). Measured: base tension
+  // 0.0038 %, anchor pull 0.0059 %, nodes within 2.9 mm, sag bottom 0.016 %, hump top 0.028 %; the bounds
+  // sit about 5x above.
+  EXPECT_LT(base_error, 2e-4);
+  EXPECT_LT(pull_error, 3e-4);
+  EXPECT_LT(worst_node, 0.015);  // [m]
+  EXPECT_NEAR(hump, hump_reference, 1.5e-3 * std::abs(hump_reference));
+  EXPECT_NEAR(sag, sag_reference, 1e-3 * std::abs(sag_reference));
   EXPECT_LT(hump, sag - 5.0);  // a hump: the arch rises well above the sag before it
 
   // The dynamics at the solved shape stay at rest.
@@ -385,7 +389,9 @@ TEST(Attachments, EnergyBalanceOfASwingingTwoSectionCableWithAFloat) {
     }
     std::cout << c.name << ": balance moved by " << worst << " J of " << scale << " J (" << worst / scale
               << "), dissipated " << snap.dissipated_energy << " J\n";
-    EXPECT_LT(worst, 1e-6 * scale) << c.name;
+    // RK4 at 0.5 ms over 60 s: measured 1.0e-8 of the scale in air, 3.3e-9 in water without drag, 1.5e-14
+    // with drag (which damps the swing); 5e-8 is 5x the largest.
+    EXPECT_LT(worst, 5e-8 * scale) << c.name;
     EXPECT_EQ(sim.retriedSteps(), 0);
     if (c.drag) {
       EXPECT_GT(snap.dissipated_energy, 0.01 * scale);
