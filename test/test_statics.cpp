@@ -43,6 +43,14 @@ Eigen::VectorXd restState(const StaticSolution& s) {
   return x;
 }
 
+/// Bound on restAcceleration() at a solved shape [g / l]: the statics stop at a relative residual of
+/// 1e-9; measured at most 9.9e-10 (the stiff cable in a current), 10x above. The catenary between two
+/// points has its own (kCatenaryRestTolerance).
+constexpr double kRestTolerance = 1e-8;
+/// The catenary's tip held by the 1e7 N/m coupling spring: measured 3.1e-9, 1.7e-8, 9.9e-8 at n = 25, 50,
+/// 100 (about 6x per doubling of n); 5x above the largest.
+constexpr double kCatenaryRestTolerance = 5e-7;
+
 /// Largest angular acceleration of the dynamics at the solved shape, relative to g / l_min.
 double restAcceleration(ChainDynamics& chain, const StaticSolution& s, const StaticProblem& problem) {
   EndInputs ends;
@@ -111,9 +119,11 @@ TEST(Statics, CatenaryBetweenTwoPoints) {
     worst.push_back(std::max({std::abs(e_first), std::abs(e_second), std::abs(e_lowest)}));
     tension_errors.push_back(std::abs(e_first));
     if (n == 50) {
-      EXPECT_LT(worst.back(), 0.005);
+      // The chain's discretization (second order in the link length): measured 0.0099 % (the lowest
+      // node; the end tensions 0.0043 %); 5x above.
+      EXPECT_LT(worst.back(), 5e-4);
     }
-    EXPECT_LT(restAcceleration(chain, s, problem), 1e-6);
+    EXPECT_LT(restAcceleration(chain, s, problem), kCatenaryRestTolerance);
   }
   // The end tensions converge cleanly at second order; the lowest node samples the continuous lowest
   // point, so its error changes sign (measured -0.047 %, +0.0099 %, -0.0012 %) and is only bounded.
@@ -132,21 +142,34 @@ TEST(Statics, FreeTipInACurrentBalancesTheTotalForce) {
   ChainDynamics chain(loadConfigFile(std::string(CABLE_CONFIG_DIR) + "/default.yaml", {"load.drag_area=0.3"}));
   const StaticSolution s = solve(chain, StaticProblem(), "free tip in a current");
   const CableParams params = loadConfigFile(std::string(CABLE_CONFIG_DIR) + "/default.yaml", {"load.drag_area=0.3"});
-  const Eigen::Vector3d current = chain.current().uniformValue();
-  Eigen::Vector3d total = chain.model().load().weight * Eigen::Vector3d::UnitZ() +
-                          0.5 * params.fluid.density * 0.3 * current.norm() * current;
+  // The config's current (world frame, z up) is along x, which the paper frame (z down) shares.
+  ASSERT_EQ(params.fluid.current.y(), 0.0);
+  ASSERT_EQ(params.fluid.current.z(), 0.0);
+  const Eigen::Vector3d current(params.fluid.current.x(), 0.0, 0.0);  // [m/s]
+  const double rho = params.fluid.density, d = params.diameter;
+  // Weights less buoyancy from the config's numbers (paper z points down): the load's, and each link's
+  // (mass per length - rho pi d^2 / 4) l.
+  Eigen::Vector3d total = (params.load.mass - rho * params.load.volume) * params.gravity * Eigen::Vector3d::UnitZ() +
+                          0.5 * rho * 0.3 * current.norm() * current;
   for (int k = 0; k < chain.links(); ++k) {
-    const double l = chain.properties().length(k);
-    total += kGravity * chain.properties().submerged_mass(k) * Eigen::Vector3d::UnitZ() +
-             l * morisonDragPerLength(s.axes.col(k), Eigen::Vector3d::Zero(), current, params.fluid.density,
-                                      params.diameter, params.fluid.drag_normal, params.fluid.drag_tangential);
+    const double l = params.totalLength() / params.links;  // equal links [m]
+    // Morison, written here (not the library's morisonDragPerLength): the current's part normal to the
+    // link, u_n = u - (u.t) t, drags with 1/2 rho C_n d |u_n| u_n per metre, its part along it with the
+    // skin friction 1/2 rho C_t (pi d) |u.t| (u.t) t.
+    const Eigen::Vector3d t = s.axes.col(k);
+    const double along = current.dot(t);
+    const Eigen::Vector3d normal = current - along * t;
+    const Eigen::Vector3d drag = 0.5 * rho * (params.fluid.drag_normal * d * normal.norm() * normal +
+                                              params.fluid.drag_tangential * M_PI * d * std::abs(along) * along * t);
+    total += (params.mass_per_length - rho * M_PI * d * d / 4.0) * l * params.gravity * Eigen::Vector3d::UnitZ() + l * drag;
   }
   const double error = (s.joint_force.col(0) + total).norm() / total.norm();
   std::cout << "total force balance: base reaction " << -s.joint_force.col(0).transpose() << " N, sum of loads "
             << total.transpose() << " N, relative error " << error << "\n";
-  EXPECT_LT(error, 1e-6);
+  // Round-off of a sum of 27 forces (measured 3.2e-16 relative); 10x above.
+  EXPECT_LT(error, 3e-15);
   EXPECT_GT(s.tension(0), 0.0);
-  EXPECT_LT(restAcceleration(chain, s, StaticProblem()), 1e-6);
+  EXPECT_LT(restAcceleration(chain, s, StaticProblem()), kRestTolerance);
 }
 
 TEST(Statics, HeavyLoadTopAngleMatchesAStraightCable) {
@@ -175,7 +198,9 @@ TEST(Statics, HeavyLoadTopAngleMatchesAStraightCable) {
   // The top link itself lies along the mean of the tension over its length (its own drag and weight
   // turn the tension by F_0 / 2 across it): a first-order (1/n) offset from the tangent at the base,
   // 1.2 % here at n = 25, which is why the angle compared is the reaction's.
-  EXPECT_NEAR(reaction / theta, 1.0, 0.005);
+  // A model error, not a numerical one: the straight cable's formula against the chain whose angle varies
+  // along it (measured 0.017 %); 6x above.
+  EXPECT_NEAR(reaction / theta, 1.0, 1e-3);
 }
 
 TEST(Statics, HorizontalCantileverMatchesBeamTheory) {
@@ -190,7 +215,8 @@ TEST(Statics, HorizontalCantileverMatchesBeamTheory) {
   const double error = s.tip_position.z() / exact - 1.0;
   std::cout << "cantilever n = 40: tip sag " << s.tip_position.z() << " m, w L^4/(8 EI) = " << exact << " m, error "
             << 100 * error << " %, tip x " << s.tip_position.x() << " m\n";
-  EXPECT_LT(std::abs(error), 0.01);
+  // The discrete cantilever's second-order error (measured 0.062 % at n = 40, as docs/MODEL.md says); 5x.
+  EXPECT_LT(std::abs(error), 3e-3);
   // Every joint's twist zero, from the clamp's frame on.
   const LinkProperties& p = chain.properties();
   for (int k = 0; k < chain.links(); ++k) {
@@ -198,7 +224,7 @@ TEST(Statics, HorizontalCantileverMatchesBeamTheory) {
                                           s.twists(k), k > 0 ? s.twists(k - 1) : p.clamp_twist);
     EXPECT_NEAR(g.twist, 0.0, 1e-12) << "joint " << k;
   }
-  EXPECT_LT(restAcceleration(chain, s, StaticProblem()), 1e-6);
+  EXPECT_LT(restAcceleration(chain, s, StaticProblem()), kRestTolerance);
 }
 
 TEST(Statics, StiffCableInACurrentIsAnEquilibriumOfTheDynamics) {
@@ -212,7 +238,7 @@ TEST(Statics, StiffCableInACurrentIsAnEquilibriumOfTheDynamics) {
   const double a = restAcceleration(chain, s, StaticProblem());
   std::cout << "stiff cable in a current: largest angular acceleration " << a << " g/l, top angle "
             << std::acos(s.axes(2, 0)) << " rad, tip " << s.tip_position.transpose() << " m\n";
-  EXPECT_LT(a, 1e-6);
+  EXPECT_LT(a, kRestTolerance);
 }
 
 TEST(Statics, CoupledTipInACurrentIsAnEquilibriumOfTheDynamics) {
@@ -227,7 +253,7 @@ TEST(Statics, CoupledTipInACurrentIsAnEquilibriumOfTheDynamics) {
   const double a = restAcceleration(chain, s, problem);
   std::cout << "anchored: largest angular acceleration " << a << " g/l, tip " << s.tip_position.transpose()
             << " m, top tension " << s.tension(0) << " N\n";
-  EXPECT_LT(a, 1e-6);
+  EXPECT_LT(a, kRestTolerance);
 }
 
 TEST(Statics, TargetOutOfReachHasNoEquilibrium) {
@@ -264,7 +290,7 @@ TEST(Statics, StiffAnchoredCableIsAnEquilibriumOfTheDynamics) {
   const double a = restAcceleration(chain, s, problem);
   std::cout << "stiff, anchored: largest angular acceleration " << a << " g/l, top angle " << std::acos(s.axes(2, 0))
             << " rad, tip " << s.tip_position.transpose() << " m\n";
-  EXPECT_LT(a, 1e-6);
+  EXPECT_LT(a, kRestTolerance);
   EXPECT_LT(std::acos(std::min(1.0, s.axes(2, 0))), 0.3);  // the clamp keeps the top near vertical
 }
 
@@ -278,5 +304,5 @@ TEST(Statics, LargeDeflectionCantileverIsAnEquilibriumOfTheDynamics) {
             << s.residual << ", tip " << s.tip_position.transpose() << " m " << s.message << "\n";
   ASSERT_TRUE(s.converged) << s.message;
   EXPECT_GT(s.tip_position.z(), 5.0);  // droops far below the clamp
-  EXPECT_LT(restAcceleration(chain, s, StaticProblem()), 1e-6);
+  EXPECT_LT(restAcceleration(chain, s, StaticProblem()), kRestTolerance);
 }
