@@ -1,6 +1,6 @@
 // estimateStableStep (issue 15) against the truth: the spectrum of the linearized equations, from the
 // finite-difference Jacobian of x' in each link's rotation and angular velocity, and RK4 runs at the
-// recommended step, which must never retry a step.
+// recommended step, which must never retry a step (but in the open cases the rows name: issue 27).
 //
 // Tolerances: the estimate's limit must not exceed the truth's RK4 limit by more than 1 % (the central
 // differences are good to ~1e-6 of the rates; RK4's reach is tabulated every 0.25 degree, 0.3 %). It is
@@ -100,12 +100,14 @@ struct Row {
   std::vector<std::string> overrides;
   double seconds;  ///< of RK4 at the recommended step
   double floor;    ///< least estimate limit / truth limit at rest (see the file's comment)
-  bool clean = true;  ///< false: retried steps are printed, not checked (open: see the row)
+  /// Retried steps allowed in the run: 0, but for the rows whose open case the row names (issue 27,
+  /// item 3: every preset must run clean at its recommended step); -1: not run (it fails; open).
+  long retries = 0;
 };
 
 }  // namespace
 
-TEST(StableStep, BoundsTheLinearizedSpectrumAndRk4NeverRetries) {
+TEST(StableStep, BoundsTheLinearizedSpectrumAndRk4RunsAtItsRecommendation) {
   const std::string dir = std::string(CABLE_CONFIG_DIR) + "/";
   // The soft tether's 25 links kink most (4 m links: the last joint bends by up to 1.34 rad as the ROV
   // sweeps, around t = 60 s): its run covers that. The old estimate recommended 3.5 ms there and retried
@@ -113,19 +115,21 @@ TEST(StableStep, BoundsTheLinearizedSpectrumAndRk4NeverRetries) {
   const std::vector<Row> rows = {
       {"rov_tether n=25", "rov_tether.yaml", {"cable.links=25"}, 75.0, 0.05},
       {"rov_tether n=25, no dampers", "rov_tether.yaml", {"cable.links=25", "cable.damping={elevation: 0, azimuth: 0, torsion: 0}"}, 30.0, 0.3},
-      // Open: in air nothing damps the ROV's whip and the last joint kinks beyond the bound (which reads the
-      // kink from the weight and drag of a link against the hanging tension): 1619 retried steps, then a
-      // step that fails even in 64 substeps, within 20 s.
-      {"rov_tether n=25, in air", "rov_tether.yaml", {"cable.links=25", "fluid.density=0", "initial.mode=angles"}, 20.0, 0.05, false},
+      // Open (issue 27, item 3): in air nothing damps the ROV's whip and the last joint kinks beyond the
+      // bound (which reads the kink from the weight and drag of a link against the hanging tension): 1639
+      // retried steps, then a step that fails even in 64 substeps at t = 12.8 s. Its spectrum is checked;
+      // RK4 is not run.
+      {"rov_tether n=25, in air", "rov_tether.yaml", {"cable.links=25", "fluid.density=0", "initial.mode=angles"}, 20.0, 0.05, -1},
       {"rov_tether n=100", "rov_tether.yaml", {"cable.links=100"}, 20.0, 0.2},
       {"armoured_umbilical n=25", "armoured_umbilical.yaml", {"cable.links=25"}, 60.0, 0.2},
       {"armoured_umbilical n=100", "armoured_umbilical.yaml", {"cable.links=100"}, 20.0, 0.3},
       {"default", "default.yaml", {}, 60.0, 0.3},
       {"default, in air", "default.yaml", {"fluid.density=0", "initial.elevation=0.3"}, 60.0, 0.3},
-      // Open: at its 15 ms recommendation one step of the start's transient (released from vertical rest
-      // into the current) fails the energy check: accuracy, not the linear stability checked above.
-      {"paper_current", "paper_current.yaml", {}, 36.0, 0.3, false},
-      {"paper_moving_ends", "paper_moving_ends.yaml", {}, 40.0, 0.3, false},
+      // Open (issue 27, item 3): at its 15 ms recommendation one step of the start's transient (released
+      // from vertical rest into the current) fails the energy check and is retried in substeps: accuracy,
+      // not the linear stability checked above. Measured: 1 retried step each; at most 1 allowed.
+      {"paper_current", "paper_current.yaml", {}, 36.0, 0.3, 1},
+      {"paper_moving_ends", "paper_moving_ends.yaml", {}, 40.0, 0.3, 1},
       {"tms_tether", "tms_tether.yaml", {}, 20.0, 0.3},
   };
   std::cout << std::setw(32) << "configuration" << std::setw(10) << "est. rate" << std::setw(12) << "true rho"
@@ -145,17 +149,19 @@ TEST(StableStep, BoundsTheLinearizedSpectrumAndRk4NeverRetries) {
     // RK4 at the recommendation.
     params.simulation.dt = s.recommended;
     CableSimulator sim(params);
-    const long steps = std::lround(row.seconds / s.recommended);
+    const long steps = row.retries < 0 ? 0 : std::lround(row.seconds / s.recommended);
     bool ok = true;
     for (long i = 0; i < steps && ok; ++i) ok = sim.step().ok;
     std::cout << std::setw(32) << row.name << std::setw(10) << std::setprecision(4) << s.rate << std::setw(12)
               << truth.radius << std::setw(12) << s.limit << std::setw(12) << truth.limit << std::setw(8)
-              << s.limit / truth.limit << std::setw(12) << s.recommended << std::setw(9) << sim.retriedSteps() << "  "
+              << s.limit / truth.limit << std::setw(12) << s.recommended << std::setw(9) << sim.retriedSteps()
+              << (row.retries < 0 ? " (not run)" : "") << (ok ? "" : " (a step failed at t = " + std::to_string(sim.time()) + " s)") << "  "
               << s.mode << " (truth: " << truth.limiting << ")\n";
     EXPECT_LE(s.limit, 1.01 * truth.limit) << row.name;
     EXPECT_GE(s.limit, row.floor * truth.limit) << row.name;
-    if (row.clean) EXPECT_TRUE(ok) << row.name;  // the open rows: printed, not checked
-    if (row.clean) EXPECT_EQ(sim.retriedSteps(), 0) << row.name << " over " << row.seconds << " s at " << s.recommended << " s";
+    if (row.retries < 0) continue;  // not run (open, see the row)
+    EXPECT_TRUE(ok) << row.name;
+    EXPECT_LE(sim.retriedSteps(), row.retries) << row.name << " over " << row.seconds << " s at " << s.recommended << " s";
   }
 }
 
