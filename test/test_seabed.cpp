@@ -181,12 +181,16 @@ TEST(GroundedCatenary, FrictionlessEquilibriumMatchesTheClosedForm) {
             << s.chain.base_force.norm() << " N (" << c.fairlead << "), touchdown at " << s.chain.seabed.touchdown_arc_length
             << " m (" << c.suspended << "), grounded " << s.chain.seabed.grounded_length << " m (" << 150.0 - c.suspended
             << "), anchor " << s.chain.coupling_force.norm() << " N, deepest " << s.chain.seabed.max_penetration << " m\n";
-  EXPECT_NEAR(horizontal / c.horizontal, 1.0, 0.01);
-  EXPECT_NEAR(s.chain.base_force.norm() / c.fairlead, 1.0, 0.01);
-  EXPECT_NEAR(s.chain.seabed.touchdown_arc_length / c.suspended, 1.0, 0.01);
-  EXPECT_NEAR(s.chain.seabed.grounded_length / (150.0 - c.suspended), 1.0, 0.01);
+  // The chain of 2 m links on contact springs against the continuous inextensible closed form: the gap
+  // is the discretization. Measured: H 0.027 %, fairlead 0.012 %, anchor 0.027 %; about 5x above. The
+  // touchdown and the grounded length are resolved to a link: measured 0.40 m and 0.17 m off, bounded by
+  // half a link (1 m) and 0.5 m.
+  EXPECT_NEAR(horizontal / c.horizontal, 1.0, 1.5e-3);
+  EXPECT_NEAR(s.chain.base_force.norm() / c.fairlead, 1.0, 6e-4);
+  EXPECT_NEAR(s.chain.seabed.touchdown_arc_length, c.suspended, 1.0);              // [m]
+  EXPECT_NEAR(s.chain.seabed.grounded_length, 150.0 - c.suspended, 0.5);         // [m]
   // Without friction the grounded chain carries H to the anchor unchanged.
-  EXPECT_NEAR(s.chain.coupling_force.norm() / c.horizontal, 1.0, 0.01);
+  EXPECT_NEAR(s.chain.coupling_force.norm() / c.horizontal, 1.0, 1.5e-3);
   EXPECT_LE(s.chain.seabed.max_penetration, sim.dynamics().model().seabedContact().allowed_penetration);
 }
 
