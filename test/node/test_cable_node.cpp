@@ -1,7 +1,12 @@
 // The node's outputs and input guards, talking to it over ROS as a user would (test/cable_node.test).
-// Every wait is bounded. The tests run in order against one node.
+// Every wait is bounded. The tests share one node, but none depends on what another left: each starts
+// from the config's state (SetUp: inputs silent past their timeout, running, `reset`, no current), so
+// they pass alone (--gtest_filter) and in any order (--gtest_shuffle).
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -23,6 +28,9 @@ namespace {
 
 constexpr int kLinks = 6;            // test/node/node_test.yaml
 constexpr double kLength = 12.0;     // [m]
+constexpr double kInputTimeout = 1.0;  // ros.input_timeout [s]
+constexpr double kRate = 100.0;        // ros.rate [Hz]
+constexpr double kStep = 0.002;        // simulation.dt [s]
 const std::string kPrefix = "cable_test/";
 
 /// Everything the node publishes, kept as the latest message, with a check that no number is non-finite.
@@ -32,6 +40,8 @@ struct Outputs {
   visualization_msgs::MarkerArray markers;
   geometry_msgs::WrenchStamped wrench;
   int joint_count = 0, state_count = 0, marker_count = 0, wrench_count = 0;
+  std::vector<double> joint_stamps, state_stamps;  ///< header stamps while `recording` [s]
+  bool recording = false;
   bool non_finite = false;
 
   void check(double v) { non_finite = non_finite || !std::isfinite(v); }
@@ -45,6 +55,7 @@ void onJoints(const sensor_msgs::JointState& m) {
   for (double v : m.effort) outputs->check(v);
   outputs->joints = m;
   ++outputs->joint_count;
+  if (outputs->recording) outputs->joint_stamps.push_back(m.header.stamp.toSec());
 }
 
 void onState(const cable_msgs::CableState& m) {
@@ -55,6 +66,7 @@ void onState(const cable_msgs::CableState& m) {
   }
   outputs->state = m;
   ++outputs->state_count;
+  if (outputs->recording) outputs->state_stamps.push_back(m.header.stamp.toSec());
 }
 
 void onMarkers(const visualization_msgs::MarkerArray& m) {
@@ -112,6 +124,33 @@ class CableNodeTest : public ::testing::Test {
     ASSERT_TRUE(waitFor([] { return outputs->joint_count > 5 && outputs->marker_count > 5 && outputs->wrench_count > 5; }, 30.0))
         << "the node published nothing within 30 s";
   }
+
+  /// The config's start, whatever the test before did: every input stream silent for longer than
+  /// ros.input_timeout (1 s, test/node/node_test.yaml), so that the ROV's pose tracker and the current
+  /// topic start again; the current set to the config's (none); running; `reset` to the config's state;
+  /// and fresh outputs of the restarted run.
+  void SetUp() override {
+    geometry_msgs::TwistStamped still;
+    still.header.frame_id = "world";
+    still.header.stamp = ros::Time::now();
+    current->publish(still);
+    spinFor(kInputTimeout + 0.3);
+    cable_msgs::SetPaused run;
+    run.request.paused = false;
+    ASSERT_TRUE(ros::service::waitForService("set_paused", ros::Duration(10.0)));
+    ASSERT_TRUE(ros::service::call("set_paused", run));
+    cable_msgs::Reset reset;
+    ASSERT_TRUE(ros::service::call("reset", reset));
+    ASSERT_TRUE(reset.response.success) << reset.response.message;
+    const int markers = outputs->marker_count, wrenches = outputs->wrench_count;
+    ASSERT_TRUE(waitFor([&] {
+      return outputs->state.sim_time < 0.5 && !outputs->state.paused && outputs->marker_count > markers + 2 &&
+             outputs->wrench_count > wrenches + 2;
+    }, 10.0)) << "no outputs after the reset";
+    outputs->non_finite = false;
+  }
+  /// No test may make the node publish a non-finite number.
+  void TearDown() override { EXPECT_FALSE(outputs->non_finite) << "a non-finite number was published"; }
 
   static geometry_msgs::PoseStamped pose(const Eigen::Vector3d& world, ros::Time stamp) {
     geometry_msgs::PoseStamped p;
@@ -276,7 +315,46 @@ TEST_F(CableNodeTest, ServicesPauseResetAndGiveTheModel) {
   EXPECT_NE(wrong.response.message.find("expected 3n"), std::string::npos) << wrong.response.message;
 }
 
+/// The median of the spacings of consecutive `stamps` [s], and whether any stamp repeats or goes back.
+double medianSpacing(const std::vector<double>& stamps, bool& repeated) {
+  std::vector<double> d;
+  repeated = false;
+  for (std::size_t i = 1; i < stamps.size(); ++i) {
+    d.push_back(stamps[i] - stamps[i - 1]);
+    repeated = repeated || d.back() <= 0.0;
+  }
+  if (d.empty()) return 0.0;
+  std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+  return d[d.size() / 2];
+}
+
+// The node publishes joint_states and cable_state once per cycle at ros.rate (100 Hz). Judged by the
+// stamps, which are the simulated instants published (each cycle steps up to the clock), not by counting
+// messages against the wall clock: a loaded machine delays some cycles (their spacings are longer, the
+// next cycle makes up the time) but not the median spacing, which is one cycle, 10 ms, to a step (2 ms).
+// (This replaced rostest's hztest at 100 +- 30 Hz of wall time, which a loaded machine made fail.)
+TEST_F(CableNodeTest, PublishesOncePerCycleAtTheConfiguredRate) {
+  outputs->joint_stamps.clear();
+  outputs->state_stamps.clear();
+  outputs->recording = true;
+  ASSERT_TRUE(waitFor([] { return outputs->joint_stamps.size() > 200 && outputs->state_stamps.size() > 200; }, 60.0))
+      << "fewer than 200 messages in 60 s";
+  outputs->recording = false;
+  for (const auto* stamps : {&outputs->joint_stamps, &outputs->state_stamps}) {
+    bool repeated = false;
+    const double median = medianSpacing(*stamps, repeated);
+    std::cout << "median stamp spacing " << median << " s over " << stamps->size() << " messages, spanning "
+              << stamps->back() - stamps->front() << " s" << std::endl;
+    EXPECT_NEAR(median, 1.0 / kRate, kStep / 2.0);
+    EXPECT_FALSE(repeated) << "a stamp repeated or went back";
+  }
+}
+
 TEST_F(CableNodeTest, NoPublishedNumberIsNonFinite) {
+  // Two seconds of the config's run, the ROV held at the load (each test's TearDown checks its own run too).
+  const Eigen::Vector3d here = loadWorld();
+  spinFor(2.0, [&] { rov->publish(pose(here, ros::Time::now())); });
+  EXPECT_GT(outputs->state.sim_time, 0.5) << "the node did not run";
   EXPECT_FALSE(outputs->non_finite);
   EXPECT_EQ(outputs->state.diverged_steps, 0u);
   EXPECT_GT(outputs->state.real_time_factor, 0.0);

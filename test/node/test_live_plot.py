@@ -22,6 +22,7 @@ import rosgraph  # noqa: E402
 import rospkg  # noqa: E402
 import rospy  # noqa: E402
 import rosunit  # noqa: E402
+from cable_msgs.msg import CableState  # noqa: E402
 
 NS = "/plot_test"
 def curve_pixels(image):
@@ -37,6 +38,15 @@ class LivePlot(unittest.TestCase):
         while not condition() and time.time() < deadline:
             time.sleep(0.1)
         self.assertTrue(condition(), what)
+
+    def wait_for_states(self, topic, count):
+        """Waits until `count` more messages have come on `topic` (at most 60 s)."""
+        received = []
+        subscriber = rospy.Subscriber(topic, CableState, lambda m: received.append(1), queue_size=1000)
+        try:
+            self.wait("%d messages on %s" % (count, topic), lambda: len(received) >= count, 60.0)
+        finally:
+            subscriber.unregister()
 
     def test_draws_headless_and_writes_its_png(self):
         script = os.path.join(rospkg.RosPack().get_path("cable_dynamics"), "scripts", "live_plot.py")
@@ -54,11 +64,13 @@ class LivePlot(unittest.TestCase):
                 return NS + "/live_plot" in dict(subscribers).get(NS + "/cable_state", [])
 
             self.wait("live_plot subscribes to %s/cable_state" % NS, subscribed, 60.0)
-            time.sleep(3.0)  # ~300 states at 100 Hz
+            # Counted, not timed: 300 states published after it subscribed, then 100 more (at most 60 s
+            # each, for a loaded machine).
+            self.wait_for_states(NS + "/cable_state", 300)
             plot.send_signal(signal.SIGUSR1)
             self.wait("the PNG on SIGUSR1", lambda: os.path.exists(png), 20.0)
             first = matplotlib.image.imread(png)
-            time.sleep(1.0)
+            self.wait_for_states(NS + "/cable_state", 100)
             plot.send_signal(signal.SIGINT)
             output, _ = plot.communicate(timeout=30.0)
         finally:
@@ -69,7 +81,7 @@ class LivePlot(unittest.TestCase):
         self.assertEqual(plot.returncode, 0, output)
         samples = re.search(r"live_plot: (\d+) samples, wrote", output)
         self.assertIsNotNone(samples, output)
-        self.assertGreater(int(samples.group(1)), 200)  # 4 s at 100 Hz, with room for a loaded machine
+        self.assertGreater(int(samples.group(1)), 200)  # of the 400 published while it listened
         image = matplotlib.image.imread(png)
         self.assertEqual(image.shape[:2], (480, 720))  # 9 x 6 in at 80 dpi
         self.assertEqual(first.shape, image.shape)
@@ -91,7 +103,7 @@ class LivePlot(unittest.TestCase):
             return "/umbilical/live_plot" in dict(subscribers).get("/umbilical/cable_state", [])
 
         self.wait("the demo's live_plot subscribes to /umbilical/cable_state", subscribed, 60.0)
-        time.sleep(3.0)
+        self.wait_for_states("/umbilical/cable_state", 300)
         pid = xmlrpc.client.ServerProxy(master.lookupNode("/umbilical/live_plot")).getPid("/test_live_plot")[2]
         os.kill(pid, signal.SIGUSR1)
         self.wait("the demo's PNG on SIGUSR1", lambda: os.path.exists(png), 20.0)

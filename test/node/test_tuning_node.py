@@ -23,8 +23,8 @@ class Tuning(unittest.TestCase):
         cls.latest = {}
         cls.joint_stamps = []
         rospy.Subscriber(NS + "/cable_state", CableState, lambda m: cls.latest.update(state=m), queue_size=10)
-        rospy.Subscriber(NS + "/joint_states", JointState, lambda m: cls.joint_stamps.append(time.time()),
-                         queue_size=1000)
+        rospy.Subscriber(NS + "/joint_states", JointState,
+                         lambda m: cls.joint_stamps.append(m.header.stamp.to_sec()), queue_size=1000)
         deadline = time.time() + 60.0
         while "state" not in cls.latest and time.time() < deadline:
             time.sleep(0.05)
@@ -87,24 +87,32 @@ class Tuning(unittest.TestCase):
         self.update(current_x=0.0, drag_normal=1.2)
 
     def test_3_rate(self):
-        def measured_rate(seconds):
+        def median_spacing(count=41):
+            """The median spacing of the stamps of the next `count` joint_states [s]. The stamps are the
+            simulated instants published, one per cycle, so the spacing is the cycle's period whatever the
+            machine's speed; a cycle a loaded machine delays (and the change of rate itself) moves a few
+            spacings, not the median."""
             start = len(self.joint_stamps)
-            time.sleep(seconds)
-            return (len(self.joint_stamps) - start) / seconds
+            deadline = time.time() + 60.0
+            while len(self.joint_stamps) < start + count and time.time() < deadline:
+                time.sleep(0.05)
+            stamps = self.joint_stamps[start:start + count]
+            self.assertEqual(len(stamps), count, "joint_states stopped")
+            spacings = sorted(b - a for a, b in zip(stamps, stamps[1:]))
+            return spacings[len(spacings) // 2]
 
         reply = self.update(rate=20.0)
         self.assertEqual(reply["rate"], 20.0)
-        time.sleep(0.5)
-        slow = measured_rate(3.0)
+        slow = median_spacing()
         reply = self.update(rate=5e4)  # beyond ros.rate's 10000 Hz
         self.assertEqual(reply["rate"], 20.0)
         reply = self.update(rate=100.0)
-        time.sleep(0.5)
-        fast = measured_rate(3.0)
-        print("joint_states at %.1f Hz tuned to 20 Hz, %.1f Hz tuned to 100 Hz" % (slow, fast))
-        self.assertGreater(slow, 14.0)
-        self.assertLess(slow, 26.0)
-        self.assertGreater(fast, 60.0)
+        fast = median_spacing()
+        print("joint_states every %.4f s tuned to 20 Hz, every %.4f s tuned to 100 Hz (median stamp spacing)"
+              % (slow, fast))
+        # One cycle, to a step (simulation.dt = 1 ms in winch_test.yaml).
+        self.assertAlmostEqual(slow, 1.0 / 20.0, delta=0.5e-3)
+        self.assertAlmostEqual(fast, 1.0 / 100.0, delta=0.5e-3)
 
     def test_4_pause_through_tuning_and_through_the_service(self):
         self.assertTrue(self.update(paused=True)["paused"])
