@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+#include "cable_dynamics/ros/cycle_stepper.h"
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/frame_name.h"
 #include "cable_dynamics/ros/input_guard.h"
@@ -243,6 +245,21 @@ TEST(SimClock, StampsFollowTheSimulatorsTimeAndTheLagIsBounded) {
   EXPECT_NEAR(clock.dropExcessLag(ros::Time(1003.0), 0.2), 1.8, 1e-9);
   EXPECT_NEAR(clock.lag(ros::Time(1003.0), 0.2), 1.0, 1e-9);
   EXPECT_NEAR(clock.stampOf(0.2).toSec(), 1002.0, 1e-6) << "the stamp stays a lag behind the clock";
+}
+
+// A cycle's stepping stops at its wall-time deadline, read every 4 steps (cycle_stepper.cpp), so that the
+// node's timer keeps its rate however slow the steps are; judged here without the machine's speed: a
+// deadline already past stops the cycle after 4 steps, a far one lets every wanted step run.
+// (test_catch_up.py runs the node on a cable too slow for real time; the rate it keeps is the machine's.)
+TEST(CycleStepper, StopsAtItsWallDeadlineWithinFourSteps) {
+  CableSimulator sim(cable_dynamics::loadConfigString("cable: {links: 4, length: 4.0, diameter: 0.02, mass_per_length: 1.0}\n"));
+  const CycleReport late = stepCycle(sim, 100, ros::WallTime::now() - ros::WallDuration(1.0));
+  EXPECT_EQ(late.steps, 4);
+  EXPECT_TRUE(late.out_of_time);
+  const CycleReport early = stepCycle(sim, 100, ros::WallTime::now() + ros::WallDuration(3600.0));
+  EXPECT_EQ(early.steps, 100);
+  EXPECT_FALSE(early.out_of_time);
+  EXPECT_FALSE(early.diverged);
 }
 
 TEST(RateWindow, RealTimeFactorIsSimulatedOverWallSeconds) {
