@@ -44,7 +44,15 @@ class CatchUp(unittest.TestCase):
         self.assertGreater(measured, 0.0)
         # At most 40 steps of 0.1 ms per 10 ms cycle (slow_test.yaml): 0.4 at best on any machine.
         self.assertLess(measured, MAX_RTF + 0.05, "more simulated time than the step bound allows")
-        self.assertAlmostEqual(end_state.real_time_factor, measured, delta=0.3 * measured)
+        # The node reports its factor over its last window (>= 1 s); the load on a shared machine changes
+        # it from one second to the next, so the comparison is over the same span: the mean of what it
+        # reported for windows inside these 4 s (the messages from their second second on).
+        reported = [m.real_time_factor for t, m in states[first:] if t >= start_wall + 1.0]
+        self.assertTrue(reported, "no cable_state in the window")
+        mean_reported = sum(reported) / len(reported)
+        print("catch-up: reported real-time factor %.3f on average over the window, measured %.3f"
+              % (mean_reported, measured))
+        self.assertAlmostEqual(mean_reported, measured, delta=0.3 * measured)
         lags = [m.lag for _, m in states[first:]]
         self.assertLessEqual(max(lags), MAX_LAG + 0.05)
         self.assertGreater(min(lags), 0.5 * MAX_LAG)
