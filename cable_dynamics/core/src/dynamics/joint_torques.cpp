@@ -151,4 +151,36 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
   return energy;
 }
 
+void springGeneralizedForces(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, Eigen::VectorXd& out) {
+  const int n = model.links();
+  const LinkProperties& p = model.properties();
+  out.setZero(3 * n);
+  if (model.stiffnessModel() == StiffnessModel::kPaper && !model.hasSprings()) return;
+  paperCoordinates(n, data.azimuths, x, data.paper_q, data.paper_qd);
+  if (model.stiffnessModel() == StiffnessModel::kPaper) {
+    // The paper's springs are defined on q: dV/dq = K q (its clamp never turns).
+    for (int k = 0; k < n; ++k) {
+      out.segment<3>(3 * k) = Eigen::Vector3d(p.stiffness_elevation(k), p.stiffness_azimuth(k), p.stiffness_torsion(k))
+                                  .cwiseProduct(data.paper_q.segment<3>(3 * k));
+    }
+    return;
+  }
+  // The spring torques tau_k by virtual power: omega_k = -psi_k' e_z - te_k' n_k - phi_k' u_k with psi, phi
+  // absolute (paper_coordinates.cpp), so Q_te = -tau.n, Q_psi = -tau.e_z, Q_phi = -tau.u, and each relative
+  // azimuth a_j and torsion t_j turns every link from j on: Q_a_j = sum_{k >= j} Q_psi_k (Q_t_j likewise).
+  // dV/dq = -Q. Exact at the vertical too (the map from rates to omega is defined there).
+  double psi = 0.0;
+  for (int k = 0; k < n; ++k) {
+    psi += data.paper_q(3 * k + 1);
+    Eigen::Vector3d nvec, evec;
+    eulerAxes(data.paper_q(3 * k), psi, nvec, evec);
+    const Eigen::Vector3d tau = data.spring_torque.col(k);
+    out.segment<3>(3 * k) << tau.dot(nvec), tau.z(), tau.dot(data.links.get(&LinkBlock::u, k));
+  }
+  for (int k = n - 2; k >= 0; --k) {
+    out(3 * k + 1) += out(3 * (k + 1) + 1);
+    out(3 * k + 2) += out(3 * (k + 1) + 2);
+  }
+}
+
 }  // namespace cable_dynamics

@@ -5,7 +5,7 @@
 
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 #include "cable_dynamics/dynamics/fluid.h"
-#include "cable_dynamics/dynamics/joint_torques.h"
+#include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/link_rates.h"
 
 namespace cable_dynamics {
@@ -75,8 +75,7 @@ LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainMod
   }
   const Eigen::Vector3d tip_acc = data.tip_known_acc + solver_.tipDelta();
   added_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);
-  return {endsInputPower(model, data, ends, solver_.baseForce()),
-          data.drag_power + added_power + damperPower(model, data) - data.contact_dissipation};
+  return {endsInputPower(model, data, ends, solver_.baseForce()), lossPower(model, data, added_power)};
 }
 
 bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,
