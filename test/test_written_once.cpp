@@ -27,6 +27,7 @@ struct Balance {
   double moved = 0.0;  ///< largest |total energy - its start| over the run [J]
   double scale = 0.0;  ///< largest |kinetic| + |potential| + elastic + contact seen [J]
   double dissipated = 0.0, work = 0.0;  ///< at the end [J]
+  double grounded = 0.0;                ///< the most cable on the bottom [m]
 };
 
 /// Runs `params` for `seconds`, sampling the balance every 0.05 s.
@@ -46,6 +47,7 @@ Balance runBalance(const CableParams& params, double seconds) {
     b.moved = std::max(b.moved, std::abs(s.total_energy - start));
     b.scale = std::max(b.scale, std::abs(s.chain.kinetic_energy) + std::abs(s.chain.potential_energy) +
                                     std::abs(s.chain.elastic_energy) + s.chain.contact_energy);
+    b.grounded = std::max(b.grounded, s.chain.seabed.grounded_length);
   }
   b.dissipated = s.dissipated_energy;
   b.work = s.work_input;
@@ -85,17 +87,16 @@ CableParams onATurningVessel(double dt) {
 // The bed must add nothing to the balance's error but its own first-order share. The semi-implicit
 // scheme's balance in water does not yet halve with h at 1-2 ms (without a bed: 1.65 J at 2 ms, 1.27 J at
 // 1 ms over 6 s, the drag's and added mass's first-order terms not in their asymptotic range), so the
-// truth here is the same fall without the bottom: with it, the balance moved 0.10 J more at 2 ms (the
-// contact took 1e2 J out). At 05a647c the contact's dissipation was left out of the balance: on
-// test_seabed's bed (4 ms, 20 s) it moved 29.7 J, and 29.2 J at 2 ms, of which 2.1 and 1.8 J remain now.
+// truth here is the same fall without the bottom: with it, the balance moved 0.046 J more at 2 ms over
+// 8 s (1.751 J against 1.704 J). At 05a647c the contact's dissipation was left out of the balance: this
+// fall's moved 21.4 J (cable_sim of 05a647c on the same config), 19.7 J more than without the bottom.
 TEST(SemiImplicitBalance, ASeabedAddsNothingToItsError) {
   const Balance bed = runBalance(fallingOnTheBottom(0.002, true), 8.0);
   const Balance none = runBalance(fallingOnTheBottom(0.002, false), 8.0);
   std::cout << "semi-implicit at 2 ms: balance moved " << bed.moved << " J on the bottom, " << none.moved
-            << " J without one, of " << bed.scale << " J; dissipated " << bed.dissipated << " J with, " << none.dissipated
-            << " J without" << std::endl;
-  EXPECT_GT(bed.dissipated - none.dissipated, 10.0);  // the contact does take energy out
-  EXPECT_LT(std::abs(bed.moved - none.moved), 0.3);   // measured 0.10 J
+            << " J without one, of " << bed.scale << " J; up to " << bed.grounded << " m grounded" << std::endl;
+  EXPECT_GT(bed.grounded, 5.0);                      // it does land and slide (measured: 10 m)
+  EXPECT_LT(std::abs(bed.moved - none.moved), 0.2);  // measured 0.046 J
 }
 
 TEST(SemiImplicitBalance, WithATurningClampItClosesToFirstOrder) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "cable_dynamics/dynamics/forces/tip_clamp.h"
 #include "cable_dynamics/dynamics/joint_geometry.h"
 #include "cable_dynamics/dynamics/paper_coordinates.h"
 #include "cable_dynamics/dynamics/paper_model.h"
@@ -55,8 +56,8 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
     const Eigen::Vector3d axis = links.get(&LinkBlock::u, k);
     const JointGeometry g =
         jointGeometry(prev, axis, x(StateLayout::twist(k)), inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
-    // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
-    const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * bendOverSine(g.bend, g.sine) * g.cross;
+    // Bend: V = 1/2 k_b beta^2 (forces/joint_springs.h).
+    const Eigen::Vector3d bend_torque = bendSpringTorque(p.stiffness_elevation(k), g.bend, g.sine, g.cross);
     // Twist: a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
     const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + g.cosine);
     const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
@@ -79,14 +80,12 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
   // A clamped tip: a bend spring and damper between the last link and the tip's clamp axis, no twist
   // spring (a swivel). Written as a joint whose inboard body is the last link and outboard the clamp.
   const int last = model.links() - 1;
-  if (p.tip_clamp_stiffness > 0.0 || p.tip_clamp_damping > 0.0) {
+  const TipClamp tip = model.tipClamp();
+  if (tip.active()) {
     const Eigen::Vector3d axis = links.get(&LinkBlock::u, last), clamp = data.tip_clamp_axis;
-    const Eigen::Vector3d cross = axis.cross(clamp);
-    const double sine = cross.norm(), bend = std::atan2(sine, axis.dot(clamp));
-    const Eigen::Vector3d on_clamp = -p.tip_clamp_stiffness * bendOverSine(bend, sine) * cross;
-    const Eigen::Vector3d relative = data.tip_clamp_omega - links.get(&LinkBlock::omega, last);
-    const Eigen::Vector3d direction = (axis + clamp).normalized();
-    const Eigen::Vector3d damper_on_clamp = -p.tip_clamp_damping * (relative - relative.dot(direction) * direction);
+    const Eigen::Vector3d on_clamp = tip.springOnClamp(axis, clamp);
+    const Eigen::Vector3d damper_on_clamp =
+        tip.damperOnClamp(axis, clamp, links.get(&LinkBlock::omega, last), data.tip_clamp_omega);
     data.spring_torque.col(last) -= on_clamp;
     data.damping_torque.col(last) -= damper_on_clamp;
     data.tip_clamp_torque = -(on_clamp + damper_on_clamp);  // the clamp holds the last link with it
@@ -143,11 +142,7 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
                                           inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
     energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
   }
-  if (p.tip_clamp_stiffness > 0.0) {
-    const Eigen::Vector3d axis = links.get(&LinkBlock::u, model.links() - 1), clamp = data.tip_clamp_axis;
-    const double bend = std::atan2(axis.cross(clamp).norm(), axis.dot(clamp));
-    energy += 0.5 * p.tip_clamp_stiffness * bend * bend;
-  }
+  if (p.tip_clamp_stiffness > 0.0) energy += model.tipClamp().energy(links.get(&LinkBlock::u, model.links() - 1), data.tip_clamp_axis);
   return energy;
 }
 

@@ -5,6 +5,7 @@
 
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 #include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/forces/coupling.h"
 #include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/link_rates.h"
 
@@ -169,9 +170,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     const Eigen::Vector3d tip_push2 = h * solver_.tipDelta();
     const Eigen::Vector3d dv = 0.5 * (tip_push2 - tip_push1);
     const Eigen::Vector3d dx = 0.5 * (tip_rate2 + gh * tip_push2 - tip_shift1);
-    const LoadConstants& load = model.load();
-    power2.input += data.coupling.dot(dv) -
-                    (load.coupling_stiffness * dx + load.coupling_damping * dv).dot(data.tip_velocity);
+    power2.input += model.load().coupling().powerShift(data.coupling, data.tip_velocity, dx, dv);
   }
   for (int k = first; k < n; ++k) {
     const Eigen::Vector3d spin2 = h * solver_.link(k).angular_acc;
