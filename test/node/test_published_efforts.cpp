@@ -41,7 +41,7 @@ TEST(PublishedEfforts, AreTheModelsWithATurningClamp) {
   std::cout << "published spring forces off the model's by at most " << worst << " N m, of up to " << largest << " N m"
             << std::endl;
   EXPECT_GT(largest, 1.0);  // the clamp does load the springs
-  EXPECT_LT(worst, 3e-11 * largest);  // the differences' round-off, 4.6e-12 of it in test_written_once
+  EXPECT_LT(worst, 6e-11 * largest);  // the differences' round-off: measured 1.1e-11 of it (3.8e-10 N m)
 }
 
 }  // namespace
