@@ -4,6 +4,9 @@
 # binaries in turn, old new old new ..., ROUNDS rounds, each run `fluid_step 10,100,1000`, and prints
 # per n the medians of the recursive column [ns per step], the median and range of the per-round
 # new/old ratios, and each binary's own range (the spread).
+# TARGET=stiff_step measures the stiff presets instead (config/rov_tether.yaml, armoured_umbilical.yaml:
+# RK4 at its stable step and the implicit integrator at its recommended one, `stiff_step SIZES BUDGET`),
+# in wall seconds per simulated second, one row per preset, n and scheme.
 #
 # Why interleaved: the machine is shared and noisy (other jobs compile on its 2 cores). Two separate
 # bench runs minutes apart measure the load of those minutes as much as the code; alternating the
@@ -32,6 +35,9 @@ NEW_REF="${2:-}"
 ROUNDS="${ROUNDS:-5}"
 SIZES="${SIZES:-10,100,1000}"
 JOBS="${JOBS:-2}"
+TARGET="${TARGET:-fluid_step}"
+BUDGET="${BUDGET:-1.0}"  # stiff_step: wall seconds per cell
+case "$TARGET" in fluid_step|stiff_step) ;; *) echo "TARGET is '$TARGET': expected fluid_step or stiff_step" >&2; exit 2 ;; esac
 log() { echo "[compare] $*" >&2; }
 
 # --- packages: only what fluid_step needs (no MuJoCo/DART/...: cable_bench is not built) -------------
@@ -65,12 +71,12 @@ else
   [ -z "$(git -C "$REPO" status --porcelain --untracked-files=no)" ] || new_label+=" (with uncommitted changes)"
 fi
 
-# build SRC_TREE NAME: bench/fluid_step of SRC_TREE, built in $TMP/build-NAME (only that target).
+# build SRC_TREE NAME: bench/$TARGET of SRC_TREE, built in $TMP/build-NAME (only that target).
 build() {
   local dir="$TMP/build-$2"
-  log "building $2 fluid_step ($1)"
+  log "building $2 $TARGET ($1)"
   if ! { cmake -S "$1/bench" -B "$dir" -DCMAKE_BUILD_TYPE=Release &&
-         cmake --build "$dir" --target fluid_step -j"$JOBS"; } >"$TMP/build-$2.log" 2>&1; then
+         cmake --build "$dir" --target "$TARGET" -j"$JOBS"; } >"$TMP/build-$2.log" 2>&1; then
     tail -n 40 "$TMP/build-$2.log" >&2
     log "build of $2 failed"
     return 1
@@ -86,6 +92,22 @@ recursive_column() {
   awk '$1 == "n" { col = 0; for (i = 1; i <= NF; ++i) if ($i == "recursive") col = i; next }
        col && $1 ~ /^[0-9]+$/ && $col ~ /^[0-9.]+$/ { print $1, $col }' "$1"
 }
+# stiff_cells FILE: "preset:n:scheme seconds" for the RK4 and the implicit cells of a stiff_step output
+# (the first two "<number> s" cells of each row: rk4 at its stable step, implicit on the preset).
+stiff_cells() {
+  awk '/\(config\// { preset = $1; next }
+       preset != "" && $1 ~ /^[0-9]+$/ {
+         c = 0
+         for (i = 2; i < NF; ++i) if ($(i + 1) == "s" && $i ~ /^[0-9.e+-]+$/) { ++c; if (c <= 2) print preset ":" $1 ":" (c == 1 ? "rk4" : "implicit"), $i }
+       }' "$1"
+}
+measure() {  # measure BINARY OUT: runs it, prints "key value" lines
+  if [ "$TARGET" = fluid_step ]; then
+    "$1" "$SIZES" >"$2" 2>&1 && recursive_column "$2"
+  else
+    "$1" "$SIZES" "$BUDGET" >"$2" 2>&1 && stiff_cells "$2"
+  fi
+}
 
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 : >"$TMP/values"
@@ -93,51 +115,57 @@ for ((round = 1; round <= ROUNDS; ++round)); do
   for which in old new; do
     log "round $round/$ROUNDS: $which"
     out="$TMP/run-$which-$round.txt"
-    if ! "$TMP/build-$which/fluid_step" "$SIZES" >"$out" 2>&1; then
+    if ! measure "$TMP/build-$which/$TARGET" "$out" >"$TMP/parsed"; then
       cat "$out" >&2
-      log "fluid_step ($which, round $round) failed"
+      log "$TARGET ($which, round $round) failed"
       exit 1
     fi
-    recursive_column "$out" | sed "s/^/$which $round /" >>"$TMP/values"
+    sed "s/^/$which $round /" "$TMP/parsed" >>"$TMP/values"
   done
 done
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
-# Every size must have a value in every run.
-for n in ${SIZES//,/ }; do
+# Every row must have a value in every run.
+keys="$(awk '{ print $3 }' "$TMP/values" | awk '!seen[$0]++' | paste -sd, -)"
+[ -n "$keys" ] || { log "no values parsed"; exit 1; }
+for n in ${keys//,/ }; do
   for which in old new; do
     count="$(awk -v w="$which" -v n="$n" '$1 == w && $3 == n' "$TMP/values" | wc -l)"
-    [ "$count" -eq "$ROUNDS" ] || { log "n = $n: $count of $ROUNDS $which values parsed"; exit 1; }
+    [ "$count" -eq "$ROUNDS" ] || { log "$n: $count of $ROUNDS $which values parsed"; exit 1; }
   done
 done
 
 # --- the table -----------------------------------------------------------------------------------------
 echo
-echo "fluid_step, recursive formulation, RK4 dt = 1 ms, full fluid forces: wall time per step [ns]"
+if [ "$TARGET" = fluid_step ]; then
+  echo "fluid_step, recursive formulation, RK4 dt = 1 ms, full fluid forces: wall time per step [ns]"
+else
+  echo "stiff_step: wall seconds per simulated second (rk4 at its stable step, implicit at its recommended one), rows preset:n:scheme"
+fi
 echo "old: $OLD_REF = $old_commit"
 echo "new: $new_label"
 echo "$ROUNDS rounds, old and new interleaved (old new old new ...); each value is one run's median of 5"
 echo "nproc: $(nproc); load average (1, 5, 15 min) before: $load_before, after: $load_after"
 echo
-awk -v sizes="$SIZES" -v rounds="$ROUNDS" '
+awk -v sizes="$keys" -v rounds="$ROUNDS" -v fmt="$([ "$TARGET" = fluid_step ] && echo %.0f || echo %.4g)" '
   function sort(a, k,   i, j, t) { for (i = 2; i <= k; ++i) for (j = i; j > 1 && a[j - 1] > a[j]; --j) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t } }
   function median(a, k) { return k % 2 ? a[(k + 1) / 2] : (a[k / 2] + a[k / 2 + 1]) / 2 }
   # stats(a, k): "median  min-max  (max-min)/median" of the k values in a (sorted in place).
   function stats(a, k, fmt) { sort(a, k); return sprintf(fmt " %s %s", median(a, k), sprintf(fmt "-" fmt, a[1], a[k]), sprintf("%.0f%%", 100 * (a[k] - a[1]) / median(a, k))) }
   { v[$1, $2, $3] = $4 }
   END {
-    printf "%-5s | %9s %15s %6s | %9s %15s %6s | %7s %11s %6s\n", "n", "old [ns]", "old min-max", "spread", "new [ns]", "new min-max", "spread", "new/old", "min-max", "spread"
+    printf "%-5s | %9s %15s %6s | %9s %15s %6s | %7s %11s %6s\n", "n", "old", "old min-max", "spread", "new", "new min-max", "spread", "new/old", "min-max", "spread"
     k = split(sizes, n, ",")
     for (s = 1; s <= k; ++s) {
       for (r = 1; r <= rounds; ++r) { o[r] = v["old", r, n[s]]; w[r] = v["new", r, n[s]]; q[r] = w[r] / o[r] }
-      split(stats(o, rounds, "%.0f"), so, " "); split(stats(w, rounds, "%.0f"), sw, " "); split(stats(q, rounds, "%.3f"), sq, " ")
+      split(stats(o, rounds, fmt), so, " "); split(stats(w, rounds, fmt), sw, " "); split(stats(q, rounds, "%.3f"), sq, " ")
       printf "%-5s | %9s %15s %6s | %9s %15s %6s | %7s %11s %6s\n", n[s], so[1], so[2], so[3], sw[1], sw[2], sw[3], sq[1], sq[2], sq[3]
     }
     print ""
     print "old/new [ns] and new/old per round:"
     for (s = 1; s <= k; ++s) {
       line = sprintf("  n = %-5s", n[s])
-      for (r = 1; r <= rounds; ++r) line = line sprintf("  %.0f/%.0f %.3f", v["old", r, n[s]], v["new", r, n[s]], v["new", r, n[s]] / v["old", r, n[s]])
+      for (r = 1; r <= rounds; ++r) line = line sprintf("  " fmt "/" fmt " %.3f", v["old", r, n[s]], v["new", r, n[s]], v["new", r, n[s]] / v["old", r, n[s]])
       print line
     }
   }' "$TMP/values"

@@ -128,3 +128,9 @@ target_link_libraries(test_body_motion cable_dynamics_core ${GTEST_MAIN_LIBRARIE
 
 # cable_sim's CSV and rosbag outputs.
 include(${CMAKE_CURRENT_LIST_DIR}/tooling/tooling_tests.cmake)
+
+# Issue 22: what was written twice, each checked against a truth outside its own path.
+catkin_add_gtest(test_written_once test/test_written_once.cpp)
+target_link_libraries(test_written_once cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+catkin_add_gtest(test_force_modules test/test_force_modules.cpp)
+target_link_libraries(test_force_modules cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

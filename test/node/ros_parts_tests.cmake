@@ -14,3 +14,6 @@ endforeach()
 # No copies in the process: a subscriber there receives the SharedPublisher's own message object.
 add_rostest_gtest(test_shared_messages test/shared_messages.test test/node/test_shared_messages.cpp)
 target_link_libraries(test_shared_messages cable_dynamics_ros ${GTEST_LIBRARIES})
+# Issue 22: the published joint efforts are the dynamics' own, with a turning clamp.
+catkin_add_gtest(test_published_efforts test/node/test_published_efforts.cpp)
+target_link_libraries(test_published_efforts cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})

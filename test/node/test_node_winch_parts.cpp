@@ -211,8 +211,7 @@ TEST(WinchOutputs, FilledFromASimulatorThatPaysOutAndHaulsIn) {
   source.alpha_hint = Eigen::VectorXd::Zero(p.links);
   NodeStatus status;
   const auto publish = [&] {
-    const ElasticJoints joints(sim.properties());
-    ASSERT_TRUE(readOutputs(sim, joints, source));
+    ASSERT_TRUE(readOutputs(sim, source));
     status.winch = winchStatus(source);
     g_allocations = 0;
     g_counting = true;

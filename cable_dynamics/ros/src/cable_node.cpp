@@ -38,8 +38,6 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   loadNodeParameters(private_nh_, params_, options_, &config_tree_, &ros_tree_);
   sim_ = std::make_unique<CableSimulator>(params_);  // throws std::invalid_argument on a refused combination
   requireStableTimeStep(params_, sim_->properties());  // a dt beyond RK4's reach: refused at start, naming it
-  joints_ = std::make_unique<ElasticJoints>(sim_->properties());
-  joints_first_ = sim_->firstLink();
   names_.prefix = options_.frame_prefix;
   clock_ = SimClock(options_.max_lag);
 
@@ -326,13 +324,7 @@ void CableNode::onTimer(const ros::TimerEvent&) {
 }
 
 void CableNode::publishOutputs(const ros::Time& stamp) {
-  if (sim_->firstLink() != joints_first_) {
-    // A link was added or removed at the winch: the base's joint springs moved to the new base link.
-    // Rebuilt only then (two vectors of 3n), not every cycle.
-    joints_ = std::make_unique<ElasticJoints>(sim_->properties());
-    joints_first_ = sim_->firstLink();
-  }
-  if (!readOutputs(*sim_, *joints_, source_)) {
+  if (!readOutputs(*sim_, source_)) {
     recoverFromDivergence("non-finite state at t = " + std::to_string(sim_->time()) + " s (nothing published)");
     return;
   }

@@ -27,7 +27,7 @@ bool finite(const PoseVector& poses) {
 
 }  // namespace
 
-bool readOutputs(CableSimulator& sim, const ElasticJoints& joints, OutputSource& out) {
+bool readOutputs(CableSimulator& sim, OutputSource& out) {
   try {
     sim.snapshot(out.snapshot);
   } catch (const std::runtime_error&) {  // the state cannot be evaluated
@@ -43,7 +43,9 @@ bool readOutputs(CableSimulator& sim, const ElasticJoints& joints, OutputSource&
   w.links_removed = sim.linksRemoved();
   const int n = sim.links();
   if (out.alpha_hint.size() != n) out.alpha_hint = Eigen::VectorXd::Zero(n);
-  joints.force(out.snapshot.q, out.spring_force);
+  // The joint springs' dV/dq as the dynamics computed them, with the clamps where the ends have them (a
+  // clamp turning with the vessel or the ROV): one computation for the model and the message.
+  out.spring_force = out.snapshot.chain.spring_force;
   linkFrames(out.snapshot.axes, out.snapshot.twists, out.snapshot.chain.ends.col(0), sim.properties().length, out.links,
              out.after_azimuth, out.after_elevation, out.alpha_hint);
   if (!out.alpha_hint.allFinite()) out.alpha_hint.setZero();  // never let a bad hint outlive this instant

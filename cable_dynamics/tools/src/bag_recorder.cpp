@@ -10,7 +10,6 @@
 #include <std_msgs/String.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "cable_dynamics/dynamics/elastic_joints.h"
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/message_builders.h"
 #include "cable_dynamics/ros/output_source.h"
@@ -23,8 +22,6 @@ struct BagRecorder::Impl {
   CableParams params;
   CableFrameNames names;
   rosbag::Bag bag;
-  std::unique_ptr<ElasticJoints> joints;  ///< the springs of the present deployment (rebuilt at a link change)
-  int joints_first = -1;                  ///< the first link `joints` was built for
   OutputSource source;
   CableOutputs outputs;
   NodeStatus status;  ///< sim_time only: the node's wall-clock figures have no meaning offline
@@ -73,14 +70,9 @@ bool BagRecorder::record(CableSimulator& sim, std::string& error) {
     error = "the bag is closed";
     return false;
   }
-  if (sim.firstLink() != m.joints_first) {
-    // A link was added or removed at the winch: the base's joint springs moved to the new base link.
-    m.joints = std::make_unique<ElasticJoints>(sim.properties());
-    m.joints_first = sim.firstLink();
-  }
-  // readOutputs fills the source in place: the spring torques sized once, for every slot (as the node does).
+  // readOutputs fills the source in place: the spring forces sized once, for every slot (as the node does).
   if (m.source.spring_force.size() != 3 * sim.links()) m.source.spring_force = Eigen::VectorXd::Zero(3 * sim.links());
-  if (!readOutputs(sim, *m.joints, m.source)) {
+  if (!readOutputs(sim, m.source)) {
     error = "non-finite state (nothing of it written)";
     return false;
   }

@@ -7,6 +7,7 @@
 #include "cable_dynamics/dynamics/dense_solver.h"
 #include "cable_dynamics/dynamics/energies.h"
 #include "cable_dynamics/dynamics/external_loads.h"
+#include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/hot_path.h"
 #include "cable_dynamics/dynamics/joint_torques.h"
 #include "cable_dynamics/dynamics/kinematics.h"
@@ -32,34 +33,7 @@ CABLE_HOT_PATH bool finiteAngularAccelerations(const LinkBlocks& links, int firs
   return std::isfinite(total);
 }
 
-/// The energy the winch pays out with the cable per metre [J/m]: kinetic energy per length of the
-/// material at the base end (translation, and the rotation of the section) plus its potential energy
-/// there. The deployed cable's energy grows by this times the pay-out speed, besides the work done on it.
-double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, const Vec3& exit_velocity) {
-  const int first = model.firstLink();
-  const LinkConstants& c = model.of(first);
-  const LinkBlock& block = data.links.of(first);
-  const int i = LinkBlocks::lane(first);
-  const double l = c.length[i], per_length = c.mass_per_length[i];
-  const Vec3 omega = block.omega[i];
-  const double spin = dot(omega, block.u[i]);
-  const double kinetic = 0.5 * per_length * dot(exit_velocity, exit_velocity) +
-                         0.5 * (c.thick_transverse[i] * (dot(omega, omega) - spin * spin) + c.polar[i] * spin * spin) / l;
-  const double potential = -(c.weight[i] / l) * block.base_pos.z[i];
-  return kinetic + potential;
-}
-
 }  // namespace
-
-double endsInputPower(const ChainModel& model, const ChainData& data, const EndInputs& ends,
-                      const Eigen::Vector3d& base_force) {
-  const int first = model.firstLink();
-  const Vec3 exit_velocity = data.links.of(first).base_vel[LinkBlocks::lane(first)];
-  double power = base_force.dot(toEigen(exit_velocity)) + data.coupling.dot(data.tip_velocity) +
-                 data.clamp_torque.dot(data.clamp_omega) + data.tip_clamp_torque.dot(data.tip_clamp_omega);
-  if (ends.winch) power += ends.winch_speed * paidOutEnergyPerLength(model, data, exit_velocity);
-  return power;
-}
 
 ChainDynamics::ChainDynamics(const CableParams& params) : model_(params), data_(model_) {
   data_.current = CurrentField(params.fluid);
@@ -118,8 +92,7 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
     xdot(StateLayout::twist(k)) = block.twist_rate[i];
     xdot.segment<3>(StateLayout::omega(k)) << block.omega_rate.x[i], block.omega_rate.y[i], block.omega_rate.z[i];
   }
-  xdot(StateLayout::dissipated(n)) =
-      data_.contact_dissipation - (data_.drag_power + data_.added_mass_power + damperPower(model_, data_));
+  xdot(StateLayout::dissipated(n)) = -lossPower(model_, data_, data_.added_mass_power);
   xdot(StateLayout::workInput(n)) = data_.input_power;
 }
 
@@ -134,6 +107,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   for (int k = first; k < n; ++k) out.ends.col(k) = l.get(&LinkBlock::base_pos, k);
   out.ends.col(n) = data_.tip_position;
   out.joint_force = data_.joint_force;
+  springGeneralizedForces(model_, data_, x, out.spring_force);
   out.tension.resize(n);
   out.tension.setZero();
   for (int k = first; k < n; ++k) out.tension(k) = -data_.joint_force.col(k).dot(l.get(&LinkBlock::u, k));

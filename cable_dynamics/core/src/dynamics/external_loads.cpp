@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "cable_dynamics/dynamics/forces/coupling.h"
+#include "cable_dynamics/dynamics/forces/point_drag.h"
 #include "cable_dynamics/dynamics/hot_path.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
 
@@ -55,23 +57,22 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
       const Eigen::Vector3d drag = pointDrag(model.fluidDensity(), a.drag_area, velocity, current_field.at(position.z()));
       block.force.set(i, block.force[i] + toVec3(drag));
       block.moment.set(i, block.moment[i] + toVec3(a.offset * drag));
-      drag_power += drag.dot(velocity);
+      drag_power += pointDragPower(drag, velocity);
     }
   }
   // The load: weight, drag, and the PD coupling to its anchor or to the ROV.
   const LoadConstants& load = model.load();
   data.load_external = load.weight * Eigen::Vector3d::UnitZ();
   if (in_water && load.drag_area > 0.0) {
-    const Eigen::Vector3d relative = current_field.at(data.tip_position.z()) - data.tip_velocity;
-    const Eigen::Vector3d drag = 0.5 * model.fluidDensity() * load.drag_area * relative.norm() * relative;
+    const Eigen::Vector3d drag =
+        pointDrag(model.fluidDensity(), load.drag_area, data.tip_velocity, current_field.at(data.tip_position.z()));
     data.load_external += drag;
-    drag_power += drag.dot(data.tip_velocity);
+    drag_power += pointDragPower(drag, data.tip_velocity);
   }
   data.drag_power = drag_power;
   data.coupling.setZero();
   if (ends.load_coupled) {
-    data.coupling = -load.coupling_stiffness * (data.tip_position - ends.target_position) -
-                    load.coupling_damping * (data.tip_velocity - ends.target_velocity);
+    data.coupling = load.coupling().force(data.tip_position, data.tip_velocity, ends.target_position, ends.target_velocity);
     data.load_external += data.coupling;
   }
   data.contact_dissipation = 0.0;

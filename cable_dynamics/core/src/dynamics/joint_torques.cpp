@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "cable_dynamics/dynamics/forces/tip_clamp.h"
 #include "cable_dynamics/dynamics/joint_geometry.h"
 #include "cable_dynamics/dynamics/paper_coordinates.h"
 #include "cable_dynamics/dynamics/paper_model.h"
@@ -55,8 +56,8 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
     const Eigen::Vector3d axis = links.get(&LinkBlock::u, k);
     const JointGeometry g =
         jointGeometry(prev, axis, x(StateLayout::twist(k)), inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
-    // Bend: V = 1/2 k_b beta^2; dV = k_b beta/sin(beta) (prev x u_k) . dTheta_k.
-    const Eigen::Vector3d bend_torque = -p.stiffness_elevation(k) * bendOverSine(g.bend, g.sine) * g.cross;
+    // Bend: V = 1/2 k_b beta^2 (forces/joint_springs.h).
+    const Eigen::Vector3d bend_torque = bendSpringTorque(p.stiffness_elevation(k), g.bend, g.sine, g.cross);
     // Twist: a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
     const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + g.cosine);
     const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
@@ -79,14 +80,12 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
   // A clamped tip: a bend spring and damper between the last link and the tip's clamp axis, no twist
   // spring (a swivel). Written as a joint whose inboard body is the last link and outboard the clamp.
   const int last = model.links() - 1;
-  if (p.tip_clamp_stiffness > 0.0 || p.tip_clamp_damping > 0.0) {
+  const TipClamp tip = model.tipClamp();
+  if (tip.active()) {
     const Eigen::Vector3d axis = links.get(&LinkBlock::u, last), clamp = data.tip_clamp_axis;
-    const Eigen::Vector3d cross = axis.cross(clamp);
-    const double sine = cross.norm(), bend = std::atan2(sine, axis.dot(clamp));
-    const Eigen::Vector3d on_clamp = -p.tip_clamp_stiffness * bendOverSine(bend, sine) * cross;
-    const Eigen::Vector3d relative = data.tip_clamp_omega - links.get(&LinkBlock::omega, last);
-    const Eigen::Vector3d direction = (axis + clamp).normalized();
-    const Eigen::Vector3d damper_on_clamp = -p.tip_clamp_damping * (relative - relative.dot(direction) * direction);
+    const Eigen::Vector3d on_clamp = tip.springOnClamp(axis, clamp);
+    const Eigen::Vector3d damper_on_clamp =
+        tip.damperOnClamp(axis, clamp, links.get(&LinkBlock::omega, last), data.tip_clamp_omega);
     data.spring_torque.col(last) -= on_clamp;
     data.damping_torque.col(last) -= damper_on_clamp;
     data.tip_clamp_torque = -(on_clamp + damper_on_clamp);  // the clamp holds the last link with it
@@ -143,12 +142,40 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
                                           inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
     energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
   }
-  if (p.tip_clamp_stiffness > 0.0) {
-    const Eigen::Vector3d axis = links.get(&LinkBlock::u, model.links() - 1), clamp = data.tip_clamp_axis;
-    const double bend = std::atan2(axis.cross(clamp).norm(), axis.dot(clamp));
-    energy += 0.5 * p.tip_clamp_stiffness * bend * bend;
-  }
+  if (p.tip_clamp_stiffness > 0.0) energy += model.tipClamp().energy(links.get(&LinkBlock::u, model.links() - 1), data.tip_clamp_axis);
   return energy;
+}
+
+void springGeneralizedForces(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, Eigen::VectorXd& out) {
+  const int n = model.links();
+  const LinkProperties& p = model.properties();
+  out.setZero(3 * n);
+  if (model.stiffnessModel() == StiffnessModel::kPaper && !model.hasSprings()) return;
+  paperCoordinates(n, data.azimuths, x, data.paper_q, data.paper_qd);
+  if (model.stiffnessModel() == StiffnessModel::kPaper) {
+    // The paper's springs are defined on q: dV/dq = K q (its clamp never turns).
+    for (int k = 0; k < n; ++k) {
+      out.segment<3>(3 * k) = Eigen::Vector3d(p.stiffness_elevation(k), p.stiffness_azimuth(k), p.stiffness_torsion(k))
+                                  .cwiseProduct(data.paper_q.segment<3>(3 * k));
+    }
+    return;
+  }
+  // The spring torques tau_k by virtual power: omega_k = -psi_k' e_z - te_k' n_k - phi_k' u_k with psi, phi
+  // absolute (paper_coordinates.cpp), so Q_te = -tau.n, Q_psi = -tau.e_z, Q_phi = -tau.u, and each relative
+  // azimuth a_j and torsion t_j turns every link from j on: Q_a_j = sum_{k >= j} Q_psi_k (Q_t_j likewise).
+  // dV/dq = -Q. Exact at the vertical too (the map from rates to omega is defined there).
+  double psi = 0.0;
+  for (int k = 0; k < n; ++k) {
+    psi += data.paper_q(3 * k + 1);
+    Eigen::Vector3d nvec, evec;
+    eulerAxes(data.paper_q(3 * k), psi, nvec, evec);
+    const Eigen::Vector3d tau = data.spring_torque.col(k);
+    out.segment<3>(3 * k) << tau.dot(nvec), tau.z(), tau.dot(data.links.get(&LinkBlock::u, k));
+  }
+  for (int k = n - 2; k >= 0; --k) {
+    out(3 * k + 1) += out(3 * (k + 1) + 1);
+    out(3 * k + 2) += out(3 * (k + 1) + 2);
+  }
 }
 
 }  // namespace cable_dynamics

@@ -55,46 +55,25 @@ SeabedContactConstants makeSeabedContact(const CableParams& params, const LinkPr
 
 namespace {
 
-/// pointContact() on a flat bed for the K points of one link (n = +z everywhere), with what the points
-/// share computed once: the axis's direction along the bed. The same formulas, term for term; adds the
-/// force and its first moment, returns the dissipated power [W]. The hot path's case.
-CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactConstants& c, double l, double damping, const Vec3& base,
-                                                          const Vec3& velocity, const Vec3& axis, const Vec3& rate, Vec3& force,
-                                                          Vec3& moment) {
-  const double depth = c.bed.shallowest(), share = l / c.points, inverse_rest = 1.0 / c.rest_penetration;
-  const double along_squared = axis.x * axis.x + axis.y * axis.y;
-  const bool has_along = along_squared > 1e-12;
-  const double along_inverse = has_along ? 1.0 / std::sqrt(along_squared) : 0.0;
-  const double ax = axis.x * along_inverse, ay = axis.y * along_inverse;
-  const bool friction = c.friction_axial > 0.0 || c.friction_lateral > 0.0;
+/// The K points of one link on a flat bed (normal +z everywhere): the same law (forces/contact.h), with what
+/// the points share found once, the axis's direction along the bed, and no probe. Adds the force and its
+/// first moment, returns the dissipated power [W]. The hot path's case.
+CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactConstants& c, const ContactLaw& law, double l,
+                                                          const Vec3& base, const Vec3& velocity, const Vec3& axis,
+                                                          const Vec3& rate, Vec3& force, Vec3& moment) {
+  const double depth = c.bed.shallowest();
+  ContactPlace place;
+  place.has_along = alongTheBed(axis, place.normal, place.along);
   double dissipation = 0.0;
   for (int j = 0; j < c.points; ++j) {
     const double s = c.node[j] * l;
-    const double delta = base.z + s * axis.z - depth;
-    if (delta <= 0.0) continue;
-    const double speed_z = velocity.z + s * rate.z;
-    const double spring = share * c.stiffness * delta;
-    const double normal = std::max(0.0, spring + share * damping * std::min(1.0, delta * inverse_rest) * speed_z);
-    double fx = 0.0, fy = 0.0;
-    double point_dissipation = (normal - spring) * speed_z;
-    if (normal > 0.0 && friction) {
-      const double sx = velocity.x + s * rate.x, sy = velocity.y + s * rate.y;
-      const double scale = normal / std::max(std::sqrt(sx * sx + sy * sy), c.friction_velocity);
-      if (has_along) {
-        const double axial = sx * ax + sy * ay;
-        const double axial_x = axial * ax, axial_y = axial * ay;
-        fx = -scale * (c.friction_axial * axial_x + c.friction_lateral * (sx - axial_x));
-        fy = -scale * (c.friction_axial * axial_y + c.friction_lateral * (sy - axial_y));
-      } else {
-        fx = -scale * c.friction_lateral * sx;
-        fy = -scale * c.friction_lateral * sy;
-      }
-      point_dissipation -= fx * sx + fy * sy;
-    }
-    const Vec3 f{fx, fy, -normal};
-    force = force + f;
-    moment = moment + s * f;
-    dissipation += point_dissipation;
+    place.delta = base.z + s * axis.z - depth;
+    if (place.delta <= 0.0) continue;
+    PointContact contact;
+    contactForce(law, place, velocity + s * rate, contact);
+    force = force + contact.force;
+    moment = moment + s * contact.force;
+    dissipation += contact.dissipation;
   }
   return dissipation;
 }
@@ -127,10 +106,11 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
       const double l = constants.length[i];
       if (k < first || k >= n || l <= 0.0) continue;
       const double share = l / c.points;
+      const ContactLaw law = c.linkLaw(k, share);
       const Vec3 base = block.base_pos[i], velocity = block.base_vel[i], axis = block.u[i], rate = block.axis_rate[i];
       Vec3 force{0.0, 0.0, 0.0}, moment{0.0, 0.0, 0.0};
       if (flat_kernel) {
-        dissipation += flatLinkContact(c, l, c.damping[k], base, velocity, axis, rate, force, moment);
+        dissipation += flatLinkContact(c, law, l, base, velocity, axis, rate, force, moment);
         LinkBlock& target = links->block(b);
         target.force.set(i, target.force[i] + force);
         target.moment.set(i, target.moment[i] + moment);
@@ -140,11 +120,12 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
       for (int j = 0; j < c.points; ++j) {
         const double s = c.node[j] * l;
         const Vec3 point = base + s * axis;
+        ContactPlace place;
         PointContact contact;
-        const bool touching =
-            pointContact(c, share, c.stiffness, c.damping[k], c.rest_penetration, point, velocity + s * rate, axis, contact);
+        const bool touching = contactPlace(c.bed, point, axis, place);
+        if (touching) contactForce(law, place, velocity + s * rate, contact);
         if (report && !report->touching) {
-          const double penetration = Seabed::penetration(c.bed.probe(point.x, point.y), point.z);
+          const double penetration = touching ? place.delta : Seabed::penetration(c.bed.probe(point.x, point.y), point.z);
           if (touching) {
             const double before = std::isfinite(previous_penetration) ? previous_penetration : penetration;
             const double fraction = before < 0.0 ? -before / (penetration - before) : 0.0;
@@ -160,7 +141,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
         moment = moment + s * contact.force;
         dissipation += contact.dissipation;
         if (report) {
-          normal -= dot(contact.force, c.bed.probe(point.x, point.y).into);  // the friction is tangential
+          normal -= dot(contact.force, place.normal);  // the friction is tangential
           report->grounded_length += share;
           report->max_penetration = std::max(report->max_penetration, contact.penetration);
           report->touching = true;
@@ -179,9 +160,10 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
     }
   }
   if (c.load_contact) {
+    ContactPlace place;
     PointContact contact;
-    if (pointContact(c, 1.0, c.load_stiffness, c.load_damping, c.load_rest, toVec3(data.tip_position), toVec3(data.tip_velocity),
-                     {0.0, 0.0, 0.0}, contact)) {
+    if (contactPlace(c.bed, toVec3(data.tip_position), {0.0, 0.0, 0.0}, place)) {
+      contactForce(c.loadLaw(), place, toVec3(data.tip_velocity), contact);
       if (load_external) *load_external += toEigen(contact.force);
       dissipation += contact.dissipation;
       if (report) {
@@ -224,23 +206,19 @@ CABLE_HOT_PATH double seabedContactEnergy(const ChainModel& model, const ChainDa
     if (l <= 0.0) continue;
     const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), axis = data.links.get(&LinkBlock::u, k);
     if (std::max(base.z(), base.z() + l * axis.z()) <= c.bed.shallowest()) continue;
-    if (c.bed.flat()) {  // the penetration is linear along the link
-      for (int j = 0; j < c.points; ++j) {
-        const double delta = base.z() + c.node[j] * l * axis.z() - c.bed.shallowest();
-        if (delta > 0.0) energy += 0.5 * (l / c.points) * c.stiffness * delta * delta;
-      }
-      continue;
-    }
+    const ContactLaw law = c.linkLaw(k, l / c.points);
     for (int j = 0; j < c.points; ++j) {
+      // On a flat bed the penetration is linear along the link: no probe.
       const Eigen::Vector3d p = base + (c.node[j] * l) * axis;
-      const double delta = Seabed::penetration(c.bed.probe(p.x(), p.y()), p.z());
-      if (delta > 0.0) energy += 0.5 * (l / c.points) * c.stiffness * delta * delta;
+      const double delta = c.bed.flat() ? base.z() + c.node[j] * l * axis.z() - c.bed.shallowest()
+                                        : Seabed::penetration(c.bed.probe(p.x(), p.y()), p.z());
+      if (delta > 0.0) energy += contactEnergy(law, delta);
     }
   }
   if (c.load_contact) {
     const Eigen::Vector3d& p = data.tip_position;
     const double delta = Seabed::penetration(c.bed.probe(p.x(), p.y()), p.z());
-    if (delta > 0.0) energy += 0.5 * c.load_stiffness * delta * delta;
+    if (delta > 0.0) energy += contactEnergy(c.loadLaw(), delta);
   }
   return energy;
 }

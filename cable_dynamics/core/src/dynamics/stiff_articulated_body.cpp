@@ -26,6 +26,10 @@
 #include <Eigen/LU>
 
 #include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/forces/coupling.h"
+#include "cable_dynamics/dynamics/forces/joint_springs.h"
+#include "cable_dynamics/dynamics/forces/point_drag.h"
+#include "cable_dynamics/dynamics/forces/tip_clamp.h"
 #include "cable_dynamics/dynamics/hot_path.h"
 #include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
@@ -43,50 +47,6 @@ namespace {
 
 inline Eigen::Matrix3d symmetrized(const Eigen::Matrix3d& m) { return 0.5 * (m + m.transpose()); }
 
-/// The unit bisector of two axes, or `fallback` where they are opposite (the joint blocks' mean axis).
-inline Eigen::Vector3d meanAxis(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& fallback) {
-  const Eigen::Vector3d sum = a + b;
-  return sum.norm() > 1e-9 ? Eigen::Vector3d(sum.normalized()) : fallback;
-}
-
-/// Spring (or damper) block of a joint with mean axis m: `across` for bending, `about` for twist.
-inline Eigen::Matrix3d jointBlock(double across, double about, const Eigen::Vector3d& m) {
-  const Eigen::Matrix3d mm = m * m.transpose();
-  return across * (Eigen::Matrix3d::Identity() - mm) + about * mm;
-}
-
-/// One contact point's stiffness and damping in the world (3x3 each), by pointContact()'s law at p moving
-/// at v on a link of axis `axis` (zero for the load), `share` metres of cable: the normal spring
-/// share k n n^T (the bed's curvature left out), the damper share c ramp n n^T, and the friction's
-/// secant N / max(|slip|, v_r) times its coefficients on the tangent plane. false above the bed.
-bool pointContactJacobian(const SeabedContactConstants& c, double share, double k, double damping, double rest,
-                          const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Eigen::Vector3d& axis,
-                          Eigen::Matrix3d& stiffness, Eigen::Matrix3d& damper) {
-  const SeabedProbe probe = c.bed.probe(p.x(), p.y());
-  const double delta = Seabed::penetration(probe, p.z());
-  if (delta <= 0.0) return false;
-  const Eigen::Vector3d n = toEigen(probe.into);
-  const double rate = v.dot(n), ramp = std::min(1.0, delta / rest);
-  const double normal = std::max(0.0, share * (k * delta + damping * ramp * rate));
-  const Eigen::Matrix3d nn = n * n.transpose();
-  stiffness = (share * k) * nn;
-  damper = (share * damping * ramp) * nn;
-  if (normal > 0.0 && (c.friction_axial > 0.0 || c.friction_lateral > 0.0)) {
-    const Eigen::Vector3d slip = v - rate * n;
-    const double scale = normal / std::max(slip.norm(), c.friction_velocity);
-    const Eigen::Matrix3d tangent = Eigen::Matrix3d::Identity() - nn;
-    const Eigen::Vector3d along = axis - axis.dot(n) * n;
-    if (along.squaredNorm() > 1e-12) {
-      const Eigen::Vector3d unit = along.normalized();
-      const Eigen::Matrix3d aa = unit * unit.transpose();
-      damper += scale * (c.friction_axial * aa + c.friction_lateral * (tangent - aa));
-    } else {
-      damper += (scale * c.friction_lateral) * tangent;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links), contact_(links) {}
@@ -97,10 +57,6 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   const LinkProperties& p = model.properties();
   const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
   const bool in_water = model.fluidDensity() > 0.0;
-  if (points_ == 0) {
-    points_ = model.drag().points();
-    gaussLegendreUnit(points_, nodes_, weights_);
-  }
   const LinkBlocks& blocks = data.links;
   const SeabedContactConstants& contact = model.seabedContact();
   for (int k = first; k < n; ++k) {
@@ -115,50 +71,13 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
       t.joint_stiffness = jointBlock(p.stiffness_elevation(k), p.stiffness_torsion(k), mean);
       t.joint_damping = jointBlock(p.damping_elevation(k), p.damping_torsion(k), mean);
     }
-    // Drag: per length f = c_n |v_n| v_n + c_t |v_t| v_t with v = current - velocity, whose derivative
-    // with respect to the structure's velocity is -C, C = c_n (|v_n| P + v_n v_n^T / |v_n|) + 2 c_t |v.u| u u^T.
-    // A point at s moves at v_base + s omega x u = v_base - s [u]x omega: with C0, C1, C2 the integrals of
-    // C, s C, s^2 C, the damping is [[-[u]x C2 [u]x, [u]x C1], [-C1 [u]x, C0]] over (omega, v_base).
-    // The current is taken at the link's middle (a Jacobian: an approximation costs no order). Then
-    // v.u = along is the same all along the link and v_n(s) = n0 - s u' (u' normal to u), so each C_m is
-    // A_m P + b W_m u u^T + G_m n0 n0^T - G_{m+1} (n0 u'^T + u' n0^T) + G_{m+2} u' u'^T with the
-    // quadrature's sums W_m of w s^m, A_m of w s^m c_n |v_n|, G_m of w s^m c_n / |v_n|, b = 2 c_t |along|.
+    // Drag: its damping over (omega, v_base), with the current at the link's middle (LinkDrag::damping).
     if (in_water) {
-      const LinkConstants& c = model.of(k);
-      const int i = LinkBlocks::lane(k);
-      const double l = c.length[i], cn = c.drag_normal[i], ct = c.drag_tangential[i];
+      const double l = model.get(&LinkConstants::length, k);
       const Eigen::Vector3d base = blocks.get(&LinkBlock::base_pos, k), v0 = blocks.get(&LinkBlock::base_vel, k);
-      const Eigen::Vector3d rate = blocks.get(&LinkBlock::axis_rate, k);
       const Eigen::Vector3d relative = data.current.at(base.z() + 0.5 * l * u.z()) - v0;
-      const double along = relative.dot(u);
-      const Eigen::Vector3d n0 = relative - along * u;
-      double w[3] = {0.0, 0.0, 0.0}, a[3] = {0.0, 0.0, 0.0}, g[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
-      for (int q = 0; q < points_; ++q) {
-        const double s = nodes_[q] * l, weight = weights_[q] * l;
-        const double speed = (n0 - s * rate).norm();
-        const double inverse = speed > 1e-12 ? cn / speed : 0.0;
-        double power = weight;  // w s^m
-        for (int m = 0; m < 5; ++m) {
-          if (m < 3) {
-            w[m] += power;
-            a[m] += power * cn * speed;
-          }
-          g[m] += power * inverse;
-          power *= s;
-        }
-      }
-      const double b = 2.0 * ct * std::abs(along);
-      const Eigen::Matrix3d uu = u * u.transpose(), P = Eigen::Matrix3d::Identity() - uu;
-      const Eigen::Matrix3d nn = n0 * n0.transpose(), nr = n0 * rate.transpose(), rr = rate * rate.transpose();
-      // C0 (force per base velocity).
-      t.drag_vv = a[0] * P + (b * w[0]) * uu + g[0] * nn - g[1] * (nr + nr.transpose()) + g[2] * rr;
-      // [u]x C1: [u]x u = 0, [u]x P = [u]x.
-      const Eigen::Vector3d un = u.cross(n0), ur = u.cross(rate);
-      t.drag_rv = a[1] * skew(u) + g[1] * un * n0.transpose() - g[2] * (un * rate.transpose() + ur * n0.transpose()) +
-                  g[3] * ur * rate.transpose();
-      // [u]x^T C2 [u]x: [u]x^T P [u]x = P, [u]x^T u u^T [u]x = 0, and (u x n)(u x n)^T for n n^T.
-      const Eigen::Matrix3d unur = un * ur.transpose();
-      t.drag_rr = a[2] * P + g[2] * un * un.transpose() - g[3] * (unur + unur.transpose()) + g[4] * ur * ur.transpose();
+      model.drag().damping(l, model.dragCoefficients(k), u, relative, blocks.get(&LinkBlock::axis_rate, k), t.drag_rr,
+                           t.drag_rv, t.drag_vv);
     } else if (contact.enabled()) {
       t.drag_rr.setZero();  // the seabed's damping adds to them below
       t.drag_rv.setZero();
@@ -184,25 +103,21 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   const LoadConstants& load = model.load();
   load_drag_.setZero();
   if (in_water && load.drag_area > 0.0) {
-    const Eigen::Vector3d relative = data.current.at(data.tip_position.z()) - data.tip_velocity;
-    const double speed = relative.norm(), k = 0.5 * model.fluidDensity() * load.drag_area;
-    load_drag_ = (k * speed) * Eigen::Matrix3d::Identity();
-    if (speed > 1e-12) load_drag_ += (k / speed) * relative * relative.transpose();
+    load_drag_ = pointDragDamping(model.fluidDensity(), load.drag_area, data.tip_velocity,
+                                  data.current.at(data.tip_position.z()));
   }
   // A clamped tip (joint_torques.cpp): bend only, across the mean of the last axis and the clamp's.
-  if (p.tip_clamp_stiffness > 0.0 || p.tip_clamp_damping > 0.0) {
-    const Eigen::Vector3d mean = meanAxis(blocks.get(&LinkBlock::u, n - 1), data.tip_clamp_axis, data.tip_clamp_axis);
-    tip_clamp_stiffness_ = jointBlock(p.tip_clamp_stiffness, 0.0, mean);
-    tip_clamp_damping_ = jointBlock(p.tip_clamp_damping, 0.0, mean);
+  if (model.tipClamp().active()) {
+    model.tipClamp().jacobian(blocks.get(&LinkBlock::u, n - 1), data.tip_clamp_axis, tip_clamp_stiffness_, tip_clamp_damping_);
   }
   load_contact_stiffness_.setZero();
   load_contact_damping_.setZero();
-  if (contact.load_contact) {
-    pointContactJacobian(contact, 1.0, contact.load_stiffness, contact.load_damping, contact.load_rest, data.tip_position,
-                         data.tip_velocity, Eigen::Vector3d::Zero(), load_contact_stiffness_, load_contact_damping_);
+  ContactPlace place;
+  if (contact.load_contact && contactPlace(contact.bed, toVec3(data.tip_position), {0.0, 0.0, 0.0}, place)) {
+    contactJacobian(contact.loadLaw(), place, data.tip_velocity, load_contact_stiffness_, load_contact_damping_);
   }
-  coupling_stiffness_ = ends.load_coupled ? load.coupling_stiffness : 0.0;
-  coupling_damping_ = ends.load_coupled ? load.coupling_damping : 0.0;
+  coupling_stiffness_ = ends.load_coupled ? load.coupling().stiffnessJacobian() : 0.0;
+  coupling_damping_ = ends.load_coupled ? load.coupling().dampingJacobian() : 0.0;
 }
 
 void StiffArticulatedBody::linearizeContact(const ChainModel& model, const ChainData& data, int k, StiffLinkTerms& t,
@@ -217,16 +132,15 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
   const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), u = data.links.get(&LinkBlock::u, k);
   if (std::max(base.z(), base.z() + l * u.z()) <= c.bed.shallowest()) return;  // all above the bed
   const Eigen::Vector3d velocity = data.links.get(&LinkBlock::base_vel, k), rate = data.links.get(&LinkBlock::axis_rate, k);
-  const double share = l / c.points;
+  const ContactLaw law = c.linkLaw(k, l / c.points);
   Eigen::Matrix3d k_m[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   Eigen::Matrix3d d_m[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   Eigen::Matrix3d stiffness, damper;
   for (int j = 0; j < c.points; ++j) {
     const double s = c.node[j] * l;
-    if (!pointContactJacobian(c, share, c.stiffness, c.damping[k], c.rest_penetration, base + s * u, velocity + s * rate, u,
-                              stiffness, damper)) {
-      continue;
-    }
+    ContactPlace place;
+    if (!contactPlace(c.bed, toVec3(base + s * u), toVec3(u), place)) continue;
+    contactJacobian(law, place, velocity + s * rate, stiffness, damper);
     t.in_contact = true;
     double power = 1.0;
     for (int m = 0; m < 3; ++m) {

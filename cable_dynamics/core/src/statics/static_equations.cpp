@@ -2,7 +2,11 @@
 
 #include <cmath>
 
-#include "cable_dynamics/dynamics/joint_geometry.h"
+#include "cable_dynamics/dynamics/forces/contact.h"
+#include "cable_dynamics/dynamics/forces/coupling.h"
+#include "cable_dynamics/dynamics/forces/joint_springs.h"
+#include "cable_dynamics/dynamics/forces/point_drag.h"
+#include "cable_dynamics/dynamics/forces/tip_clamp.h"
 
 namespace cable_dynamics {
 namespace statics {
@@ -30,7 +34,7 @@ StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& cu
   }
   has_bend_ = (bend_stiffness_.array() > 0.0).any();
   in_water_ = model.fluidDensity() > 0.0;
-  coupling_stiffness_ = problem.tip_coupled ? model.load().coupling_stiffness : 0.0;
+  coupling_stiffness_ = problem.tip_coupled ? model.load().coupling().stiffnessJacobian() : 0.0;
   clamp_axis_ = problem.clamp_moves ? problem.clamp_axis : p.clamp_axis;
   tip_clamp_stiffness_ = problem.tip_coupled ? p.tip_clamp_stiffness : 0.0;
   tip_clamp_axis_ = problem.tip_clamp_moves ? problem.tip_clamp_axis : p.tip_clamp_axis;
@@ -56,7 +60,7 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
     const LinkAttachment& point = model_.attachments()[a];
     if (point.drag_area <= 0.0) continue;
     const Eigen::Vector3d at = p + point.offset * u;
-    const Eigen::Vector3d drag = pointDrag(model_.fluidDensity(), point.drag_area, Eigen::Vector3d::Zero(), current_.at(at.z()));
+    const Eigen::Vector3d drag = pointDragAtRest(model_.fluidDensity(), point.drag_area, current_.at(at.z()));
     force += drag;
     moment += point.offset * drag;
   }
@@ -69,14 +73,15 @@ void StaticEquations::addSeabedContact(int i, const Eigen::Vector3d& u, const Ei
   // The contact points of seabed_contact.cpp at rest: the springs alone (the dampers and the
   // friction act on velocities; a friction that holds a cable at rest is not a static unknown here).
   const int k = first_ + i;
-  const double l = length_(i), share = l / c.points;
+  const double l = length_(i);
+  const ContactLaw law = c.linkLaw(k, l / c.points, contact_scale_);
   for (int j = 0; j < c.points; ++j) {
     const double s = c.node[j] * l;
-    PointContact contact;
-    if (pointContact(c, share, contact_scale_ * c.stiffness, c.damping[k], c.rest_penetration, toVec3(p + s * u),
-                     {0.0, 0.0, 0.0}, toVec3(u), contact)) {
-      force += toEigen(contact.force);
-      moment += s * toEigen(contact.force);
+    ContactPlace place;
+    if (contactPlace(c.bed, toVec3(p + s * u), toVec3(u), place)) {
+      const Eigen::Vector3d f = contactForceAtRest(law, place);
+      force += f;
+      moment += s * f;
     }
   }
 }
@@ -98,22 +103,17 @@ Eigen::Vector3d StaticEquations::loadForceFree(const Eigen::Vector3d& tip) const
   const LoadConstants& load = model_.load();
   Eigen::Vector3d f(0.0, 0.0, load.weight);
   const SeabedContactConstants& c = model_.seabedContact();
-  PointContact contact;
-  if (c.load_contact && contact_scale_ > 0.0 &&
-      pointContact(c, 1.0, contact_scale_ * c.load_stiffness, c.load_damping, c.load_rest, toVec3(tip), {0.0, 0.0, 0.0},
-                   {0.0, 0.0, 0.0}, contact)) {
-    f += toEigen(contact.force);
+  ContactPlace place;
+  if (c.load_contact && contact_scale_ > 0.0 && contactPlace(c.bed, toVec3(tip), {0.0, 0.0, 0.0}, place)) {
+    f += contactForceAtRest(c.loadLaw(contact_scale_), place);
   }
-  if (in_water_ && load.drag_area > 0.0) {
-    const Eigen::Vector3d c = current_.at(tip.z());  // [m/s]
-    f += 0.5 * model_.fluidDensity() * load.drag_area * c.norm() * c;
-  }
+  if (in_water_ && load.drag_area > 0.0) f += pointDragAtRest(model_.fluidDensity(), load.drag_area, current_.at(tip.z()));
   return f;
 }
 
 Eigen::Vector3d StaticEquations::couplingForce(const Eigen::Vector3d& tip) const {
   if (!problem_.tip_coupled) return Eigen::Vector3d::Zero();
-  return -coupling_stiffness_ * (tip - problem_.target_position);  // the damper is zero at rest
+  return model_.load().coupling().atRest(tip, problem_.target_position);
 }
 
 Eigen::Vector3d StaticEquations::outboardForce(const StaticState& s, int i) const {
@@ -125,10 +125,7 @@ Eigen::Vector3d StaticEquations::outboardForce(const StaticState& s, int i) cons
 Eigen::Vector3d StaticEquations::bendTorque(int i, const Eigen::Vector3d& prev, const Eigen::Vector3d& axis) const {
   const double k = stiffness_scale_ * bend_stiffness_(i);
   if (k == 0.0) return Eigen::Vector3d::Zero();
-  // As joint_torques.cpp: V = 1/2 k beta^2 gives -k beta/sin(beta) (prev x u) on link i.
-  const Eigen::Vector3d cross = prev.cross(axis);
-  const double sine = cross.norm(), bend = std::atan2(sine, prev.dot(axis));
-  return -k * bendOverSine(bend, sine) * cross;
+  return bendSpringTorque(k, prev, axis);  // as joint_torques.cpp's bend spring
 }
 
 void StaticEquations::residual(const StaticState& s, int i, LinkResidual& r) const {
@@ -142,10 +139,8 @@ void StaticEquations::residual(const StaticState& s, int i, LinkResidual& r) con
   Eigen::Vector3d torque = bendTorque(i, i > 0 ? Eigen::Vector3d(s.axis.col(i - 1)) : clamp_axis_, u);
   if (i + 1 < m_) torque -= bendTorque(i + 1, u, s.axis.col(i + 1));
   if (i + 1 == m_ && tip_clamp_stiffness_ > 0.0) {
-    // The tip's clamp, as joint_torques.cpp: a bend spring from the last link to the clamp's axis.
-    const Eigen::Vector3d cross = u.cross(tip_clamp_axis_);
-    const double sine = cross.norm(), bend = std::atan2(sine, u.dot(tip_clamp_axis_));
-    torque += stiffness_scale_ * tip_clamp_stiffness_ * bendOverSine(bend, sine) * cross;
+    // The tip's clamp at rest (forces/tip_clamp.h): its spring's torque on the last link.
+    torque -= TipClamp{stiffness_scale_ * tip_clamp_stiffness_, 0.0}.springOnClamp(u, tip_clamp_axis_);
   }
   r.moment = u.cross(n - length_(i) * next) + torque;
   r.closure = i > 0 ? Eigen::Vector3d(p - s.base.col(i - 1) - length_(i - 1) * s.axis.col(i - 1))

@@ -29,6 +29,9 @@ struct ChainOutputs {
   Eigen::VectorXd omega_rate;    ///< (3n) angular accelerations [rad/s^2]
   Eigen::Matrix3Xd ends;         ///< (3 x n+1) base and link far ends [m]
   Eigen::Matrix3Xd joint_force;  ///< (3 x n) force on the outboard part at joint k's base end [N]
+  /// (3n) the joint springs' generalized forces on the paper coordinates, dV/dq, with the clamps where
+  /// the ends have them [N m] (dampers excluded): the node's JointState effort is minus this.
+  Eigen::VectorXd spring_force;
   Eigen::VectorXd tension;       ///< (n) force along link k at its base end, + pulls towards the base [N]
                                  ///< (0 on a winch's drum; at the base link: the line pull)
   Eigen::Vector3d load_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the load [N]
@@ -40,15 +43,6 @@ struct ChainOutputs {
   double contact_energy = 0.0;    ///< the seabed's contact springs [J]
   SeabedReport seabed;            ///< contact forces, grounded length, touchdown (with a seabed)
 };
-
-/// The power the ends put into the cable at the kinematics in `data` [W]: the base's force on the base
-/// link's end, `base_force` [N], at that end's material velocity (with a winch, the paid-out cable's),
-/// the load coupling at the tip's velocity, the turning clamps' torques at their angular velocities, and
-/// with a winch the energy the paid-out cable brings (its energy per metre at the exit times the
-/// pay-out speed). Both the explicit evaluation (ChainDynamics::solve) and the implicit step's stages
-/// (their own base force) take it from here.
-double endsInputPower(const ChainModel& model, const ChainData& data, const EndInputs& ends,
-                      const Eigen::Vector3d& base_force);
 
 /// The model of one cable and the workspace its evaluations write.
 class ChainDynamics {

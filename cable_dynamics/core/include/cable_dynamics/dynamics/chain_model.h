@@ -9,6 +9,8 @@
 #include <Eigen/Core>
 
 #include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/forces/coupling.h"
+#include "cable_dynamics/dynamics/forces/tip_clamp.h"
 #include "cable_dynamics/dynamics/link_block.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
 #include "cable_dynamics/params/cable_params.h"
@@ -23,6 +25,8 @@ struct LoadConstants {
   double drag_area = 0.0;           ///< C_d A [m^2]
   double coupling_stiffness = 0.0;  ///< PD coupling to the anchor / ROV [N/m]
   double coupling_damping = 0.0;    ///< [N s/m]
+  /// The coupling's law (forces/coupling.h) with these gains.
+  LoadCoupling coupling() const { return {coupling_stiffness, coupling_damping}; }
 };
 
 /// Everything about one cable that does not change during a run. Each constant is computed here, once,
@@ -74,6 +78,8 @@ class ChainModel {
   /// true when some attachment has drag (the drag pass then visits them).
   bool attachmentDrag() const { return attachment_drag_; }
   const LoadConstants& load() const { return load_; }
+  /// A clamped tip's bend spring and damper (forces/tip_clamp.h; inactive unless load.fixity is clamped).
+  TipClamp tipClamp() const { return {properties_.tip_clamp_stiffness, properties_.tip_clamp_damping}; }
   /// The seabed and its contact's constants (disabled when the config has no seabed).
   const SeabedContactConstants& seabedContact() const { return seabed_; }
   bool hasWinch() const { return has_winch_; }

@@ -1,6 +1,8 @@
 #pragma once
 /// \file
-/// \brief The water around the cable: current (uniform or a depth profile) and Morison drag.
+/// \brief The water around the cable: current (uniform or a depth profile) and the links' Morison drag, the
+///        drag's module: its value and power (LinkDrag::addUniform, in SIMD lanes; pointwise), its form at
+///        rest (pointwise at zero velocity, the statics') and its Jacobian (LinkDrag::damping), side by side.
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/dynamics/forces/point_drag.h"  // the points' drag (attachments, the load)
 #include "cable_dynamics/dynamics/link_block.h"
 
 namespace cable_dynamics {
@@ -60,13 +63,6 @@ struct DragCoefficients {
   double normal = 0.0;      ///< 1/2 rho C_n d [kg/m^2]
   double tangential = 0.0;  ///< 1/2 rho C_t pi d [kg/m^2]
 };
-
-/// Isotropic drag of a point (an attachment) of C_d A = `drag_area` [m^2]: 1/2 rho C_d A |v| v, v = current - velocity [N].
-inline Eigen::Vector3d pointDrag(double density, double drag_area, const Eigen::Vector3d& velocity,
-                                 const Eigen::Vector3d& current) {
-  const Eigen::Vector3d relative = current - velocity;
-  return (0.5 * density * drag_area * relative.norm()) * relative;
-}
 
 /// addedMassPowerWeights() for lane i of `c`, with its attachments' isotropic added mass: a point at s_p
 /// moves at v + s_p u' and accelerates at a + s_p u'', so the force -m_pa (a + s_p u'') has the power
@@ -149,6 +145,56 @@ class LinkDrag {
                  const Eigen::Vector3d& base, const Eigen::Vector3d& velocity,
                  const Eigen::Vector3d& axis, const Eigen::Vector3d& axis_rate, Eigen::Vector3d& force,
                  Eigen::Vector3d& moment) const;
+
+  /// The drag's damping over the link's (omega, v_base), the implicit step's Jacobian (stiff_articulated_body.h):
+  /// torque about the base end per omega `rr` [N m s], per v_base `rv` [N s], force per v_base `vv` [N s/m]
+  /// (force per omega is rv^T), for a link of length l [m], unit axis u turning at u' = `axis_rate` [1/s],
+  /// with `relative` = current - v_base [m/s] (the current taken at the link's middle: a Jacobian, where an
+  /// approximation costs the W-method no order).
+  /// Per length f = c_n |v_n| v_n + c_t |v_t| v_t with v = current - velocity, whose derivative with respect
+  /// to the structure's velocity is -C, C = c_n (|v_n| P + v_n v_n^T / |v_n|) + 2 c_t |v.u| u u^T. A point at
+  /// s moves at v_base + s omega x u = v_base - s [u]x omega: with C0, C1, C2 the integrals of C, s C, s^2 C,
+  /// the damping is [[-[u]x C2 [u]x, [u]x C1], [-C1 [u]x, C0]]. With the current at the middle, v.u = along
+  /// is the same all along the link and v_n(s) = n0 - s u' (u' normal to u), so each C_m is
+  /// A_m P + b W_m u u^T + G_m n0 n0^T - G_{m+1} (n0 u'^T + u' n0^T) + G_{m+2} u' u'^T with the quadrature's
+  /// sums W_m of w s^m, A_m of w s^m c_n |v_n|, G_m of w s^m c_n / |v_n|, b = 2 c_t |along|. Exact (to the
+  /// quadrature) in a uniform current (test_implicit_recursion, test_force_modules).
+  EIGEN_ALWAYS_INLINE void damping(double l, const DragCoefficients& coefficients, const Eigen::Vector3d& u,
+                                   const Eigen::Vector3d& relative, const Eigen::Vector3d& rate, Eigen::Matrix3d& rr,
+                                   Eigen::Matrix3d& rv, Eigen::Matrix3d& vv) const {
+    const double cn = coefficients.normal, ct = coefficients.tangential;
+    const double along = relative.dot(u);
+    const Eigen::Vector3d n0 = relative - along * u;
+    double w[3] = {0.0, 0.0, 0.0}, a[3] = {0.0, 0.0, 0.0}, g[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int q = 0; q < points_; ++q) {
+      const double s = nodes_[q] * l, weight = weights_[q] * l;
+      const double speed = (n0 - s * rate).norm();
+      const double inverse = speed > 1e-12 ? cn / speed : 0.0;
+      double power = weight;  // w s^m
+      for (int m = 0; m < 5; ++m) {
+        if (m < 3) {
+          w[m] += power;
+          a[m] += power * cn * speed;
+        }
+        g[m] += power * inverse;
+        power *= s;
+      }
+    }
+    const double b = 2.0 * ct * std::abs(along);
+    const Eigen::Matrix3d uu = u * u.transpose(), P = Eigen::Matrix3d::Identity() - uu;
+    const Eigen::Matrix3d nn = n0 * n0.transpose(), nr = n0 * rate.transpose(), rate_rate = rate * rate.transpose();
+    // C0 (force per base velocity).
+    vv = a[0] * P + (b * w[0]) * uu + g[0] * nn - g[1] * (nr + nr.transpose()) + g[2] * rate_rate;
+    // [u]x C1: [u]x u = 0, [u]x P = [u]x.
+    const Eigen::Vector3d un = u.cross(n0), ur = u.cross(rate);
+    Eigen::Matrix3d cross_u;  // [u]x
+    cross_u << 0.0, -u.z(), u.y(), u.z(), 0.0, -u.x(), -u.y(), u.x(), 0.0;
+    rv = a[1] * cross_u + g[1] * un * n0.transpose() - g[2] * (un * rate.transpose() + ur * n0.transpose()) +
+         g[3] * ur * rate.transpose();
+    // [u]x^T C2 [u]x: [u]x^T P [u]x = P, [u]x^T u u^T [u]x = 0, and (u x n)(u x n)^T for n n^T.
+    const Eigen::Matrix3d unur = un * ur.transpose();
+    rr = a[2] * P + g[2] * un * un.transpose() - g[3] * (unur + unur.transpose()) + g[4] * ur * ur.transpose();
+  }
 
  private:
   int points_;

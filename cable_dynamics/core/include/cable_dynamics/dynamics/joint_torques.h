@@ -20,6 +20,11 @@ void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::
 /// coordinates into data's scratch). O(n).
 double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x);
 
+/// The joint springs' generalized forces on the paper coordinates, dV/dq (3n) [N m], at the torques
+/// computeJointTorques() left in `data` for state x (so with the clamps as the ends had them): what the
+/// node publishes as the joints' efforts (their negative). Not the hot path (the snapshot's).
+void springGeneralizedForces(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, Eigen::VectorXd& out);
+
 /// Power of the joint dampers [W] (negative: they take energy out), after computeJointTorques().
 double damperPower(const ChainModel& model, const ChainData& data);
 

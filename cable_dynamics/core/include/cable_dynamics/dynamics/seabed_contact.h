@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "cable_dynamics/dynamics/forces/contact.h"
 #include "cable_dynamics/dynamics/link_block.h"
 #include "cable_dynamics/dynamics/seabed.h"
 #include "cable_dynamics/params/cable_params.h"
@@ -39,64 +40,31 @@ struct SeabedContactConstants {
   double load_rest = 1.0;           ///< W / k [m]
 
   bool enabled() const { return bed.enabled(); }
+  /// The law of a contact point of slot k standing for `share` metres of it, its spring scaled by
+  /// `spring_scale` (the statics' continuation; 1 otherwise).
+  ContactLaw linkLaw(int k, double share, double spring_scale = 1.0) const {
+    return {share * (spring_scale * stiffness), share * damping[k], rest_penetration, friction_axial, friction_lateral,
+            friction_velocity};
+  }
+  /// The load's law (a point: isotropic friction).
+  ContactLaw loadLaw(double spring_scale = 1.0) const {
+    return {spring_scale * load_stiffness, load_damping, load_rest, friction_axial, friction_lateral, friction_velocity};
+  }
 };
 
 /// Builds the constants from the validated parameters and the per-link properties.
 SeabedContactConstants makeSeabedContact(const CableParams& params, const LinkProperties& properties);
 
-/// One contact point's force [N] (paper frame) and the power it dissipates [W] (>= 0: the damper and
-/// the friction, less nothing the spring stores).
-struct PointContact {
-  Vec3 force{0.0, 0.0, 0.0};
-  double dissipation = 0.0;
-  double penetration = 0.0;  ///< [m]
-};
-
-/// The contact of a point at p moving at v, standing for `share` metres of cable with axis `axis`
-/// (`share` 1 and a zero axis for the load: friction isotropic at the lateral coefficient); stiffness
-/// `k` and damping `c` per share, resting penetration `rest`. false (and `out` untouched) when the
-/// point is above the bed.
-/// Inline: it runs for every contact point of every evaluation.
-EIGEN_ALWAYS_INLINE bool pointContact(const SeabedContactConstants& c, double share, double k, double damping, double rest,
-                                     const Vec3& p, const Vec3& v, const Vec3& axis, PointContact& out) {
-  const SeabedProbe probe = c.bed.probe(p.x, p.y);
-  const double delta = Seabed::penetration(probe, p.z);
-  if (delta <= 0.0) return false;
-  const Vec3 n = probe.into;
-  const double rate = dot(v, n);  // penetration rate [m/s]
-  // Spring and damper; the damper ramps in over the resting penetration (continuous at touchdown),
-  // and the bed only pushes (a point leaving fast feels nothing rather than a pull).
-  const double ramp = std::min(1.0, delta / rest);
-  const double spring = share * k * delta;
-  const double normal = std::max(0.0, spring + share * damping * ramp * rate);  // [N]
-  Vec3 force = -normal * n;
-  // What the spring does not store is dissipated: (N - k delta share) delta' >= 0 (the damper's
-  // c ramp delta'^2 share, or, when the bed lets go, -k delta delta' share with delta' < 0).
-  double dissipation = (normal - spring) * rate;
-  if (normal > 0.0 && (c.friction_axial > 0.0 || c.friction_lateral > 0.0)) {
-    const Vec3 slip = v - rate * n;  // in the bed's tangent plane
-    const double speed = std::sqrt(dot(slip, slip));
-    // Coulomb above the regularization speed, viscous below it (continuous; zero at rest).
-    const double scale = normal / std::max(speed, c.friction_velocity);
-    const Vec3 along = axis - dot(axis, n) * n;
-    const double along_squared = dot(along, along);
-    Vec3 friction;
-    if (along_squared > 1e-12) {
-      const Vec3 unit = (1.0 / std::sqrt(along_squared)) * along;
-      const Vec3 axial = dot(slip, unit) * unit;
-      friction = -scale * (c.friction_axial * axial + c.friction_lateral * (slip - axial));
-    } else {
-      friction = -(scale * c.friction_lateral) * slip;  // the load, or a link standing on end
-    }
-    force = force + friction;
-    dissipation -= dot(friction, slip);
-  }
-  out.force = force;
-  out.dissipation = dissipation;
-  out.penetration = delta;
+/// Where the point p of a link with axis `axis` (zero for the load) is against the bed: false above it.
+/// Geometry only; the law is dynamics/forces/contact.h.
+EIGEN_ALWAYS_INLINE bool contactPlace(const Seabed& bed, const Vec3& p, const Vec3& axis, ContactPlace& place) {
+  const SeabedProbe probe = bed.probe(p.x, p.y);
+  place.delta = Seabed::penetration(probe, p.z);
+  if (place.delta <= 0.0) return false;
+  place.normal = probe.into;
+  place.has_along = alongTheBed(axis, place.normal, place.along);
   return true;
 }
-
 
 /// What the outputs show of the contact at one state (paper frame).
 struct SeabedReport {

@@ -131,8 +131,6 @@ class StiffArticulatedBody {
   Eigen::Matrix3d tip_clamp_stiffness_ = Eigen::Matrix3d::Zero(), tip_clamp_damping_ = Eigen::Matrix3d::Zero();
   Eigen::Vector3d tip_delta_ = Eigen::Vector3d::Zero(), base_force_ = Eigen::Vector3d::Zero();
   double tip_tension_ = 0.0;  ///< the load's pull along the last link [N]
-  int points_ = 0;
-  double nodes_[8] = {}, weights_[8] = {};
 };
 
 }  // namespace cable_dynamics

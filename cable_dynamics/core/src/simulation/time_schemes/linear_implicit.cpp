@@ -5,7 +5,8 @@
 
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 #include "cable_dynamics/dynamics/fluid.h"
-#include "cable_dynamics/dynamics/joint_torques.h"
+#include "cable_dynamics/dynamics/forces/coupling.h"
+#include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/link_rates.h"
 
 namespace cable_dynamics {
@@ -75,8 +76,7 @@ LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainMod
   }
   const Eigen::Vector3d tip_acc = data.tip_known_acc + solver_.tipDelta();
   added_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);
-  return {endsInputPower(model, data, ends, solver_.baseForce()),
-          data.drag_power + added_power + damperPower(model, data) - data.contact_dissipation};
+  return {endsInputPower(model, data, ends, solver_.baseForce()), lossPower(model, data, added_power)};
 }
 
 bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,
@@ -170,9 +170,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     const Eigen::Vector3d tip_push2 = h * solver_.tipDelta();
     const Eigen::Vector3d dv = 0.5 * (tip_push2 - tip_push1);
     const Eigen::Vector3d dx = 0.5 * (tip_rate2 + gh * tip_push2 - tip_shift1);
-    const LoadConstants& load = model.load();
-    power2.input += data.coupling.dot(dv) -
-                    (load.coupling_stiffness * dx + load.coupling_damping * dv).dot(data.tip_velocity);
+    power2.input += model.load().coupling().powerShift(data.coupling, data.tip_velocity, dx, dv);
   }
   for (int k = first; k < n; ++k) {
     const Eigen::Vector3d spin2 = h * solver_.link(k).angular_acc;

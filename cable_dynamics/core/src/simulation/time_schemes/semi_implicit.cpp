@@ -5,13 +5,10 @@
 #include <Eigen/Geometry>
 
 #include "cable_dynamics/dynamics/dense_solver.h"
-#include "cable_dynamics/dynamics/joint_torques.h"
+#include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/link_rates.h"
 
 namespace cable_dynamics {
-namespace {
-
-}  // namespace
 
 SemiImplicitScheme::SemiImplicitScheme(int links) {
   const int dof = 3 * links;
@@ -74,8 +71,10 @@ bool SemiImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_cond
   // Forces along the cable and the powers, with the step's mean angular acceleration.
   mean_rate_ = delta_ / h;
   denseJointForces(f.model(), f.data(), mean_rate_);
-  const double damping_power = damperPower(f.model(), data);
-  const double input_power = data.joint_force.col(0).dot(ends.base_velocity) + data.coupling.dot(data.tip_velocity);
+  // The balance's powers from the one place every scheme takes them (forces/power_balance.h): with the
+  // seabed's dissipation and the turning clamps' work, which a sum of its own here had left out.
+  const double loss_power = lossPower(f.model(), data, data.added_mass_power);
+  const double input_power = endsInputPower(f.model(), data, ends, data.joint_force.col(f.model().firstLink()));
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector3d omega = data.links.get(&LinkBlock::omega, k) + delta_.segment<3>(3 * k);
     const Eigen::Vector3d axis = data.links.get(&LinkBlock::u, k);
@@ -86,7 +85,7 @@ bool SemiImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_cond
     x(StateLayout::twist(k)) += h * twistRate(omega, axis);
     x.segment<3>(StateLayout::omega(k)) = omega;
   }
-  x(StateLayout::dissipated(n)) -= h * (data.drag_power + data.added_mass_power + damping_power);
+  x(StateLayout::dissipated(n)) -= h * loss_power;
   x(StateLayout::workInput(n)) += h * input_power;
   return x.allFinite();
 }

@@ -19,7 +19,6 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
-#include "cable_dynamics/dynamics/elastic_joints.h"
 #include "cable_dynamics/ros/input_guard.h"
 #include "cable_dynamics/ros/live_tuning.h"
 #include "cable_dynamics/ros/message_builders.h"
@@ -75,8 +74,6 @@ class CableNode {
   NodeOptions options_;
   CableFrameNames names_;
   std::unique_ptr<CableSimulator> sim_;
-  std::unique_ptr<ElasticJoints> joints_;  ///< the springs of the deployment joints_first_ (effort)
-  int joints_first_ = 0;
   std::unique_ptr<InputGuard> guard_;
   FrameResolver resolver_;
 

@@ -1,11 +1,10 @@
 #pragma once
 /// \file
 /// \brief What the node publishes about one instant, read from the simulator: the snapshot and what is
-///        derived from it for the messages (joint spring torques, link frames). Checked finite as a whole.
+///        derived from it for the messages (link frames). Checked finite as a whole.
 
 #include <Eigen/Core>
 
-#include "cable_dynamics/dynamics/elastic_joints.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/simulation/link_frames.h"
 
@@ -25,7 +24,7 @@ struct WinchReading {
 struct OutputSource {
   SimulationSnapshot snapshot;
   WinchReading winch;
-  Eigen::VectorXd spring_force;      ///< (3n) dV/dq of the joint springs (dampers excluded); JointState effort = -this [N m]
+  Eigen::VectorXd spring_force;      ///< (3n) dV/dq of the joint springs (dampers excluded), the snapshot's; JointState effort = -this [N m]
   PoseVector links;                  ///< (n) link frames, paper frame
   PoseVector after_azimuth;          ///< (n) the URDF's frame after the azimuth joint, paper frame
   PoseVector after_elevation;        ///< (n) the URDF's frame after the elevation joint, paper frame
@@ -34,6 +33,6 @@ struct OutputSource {
 
 /// Fills `out` from the simulator's present state. Returns false when the state cannot be evaluated or
 /// any number of it is not finite: then nothing of it may be published.
-bool readOutputs(CableSimulator& sim, const ElasticJoints& joints, OutputSource& out);
+bool readOutputs(CableSimulator& sim, OutputSource& out);
 
 }  // namespace cable_dynamics
