@@ -90,8 +90,9 @@ add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim cable_model)
 # The Python module (cable_dynamics/python/): run in the devel space's environment, and once more through
 # a fresh shell that sources its setup.bash, as the README's example is run.
 cable_add_pytest(python_bindings test/test_python_bindings.py
-  CABLE_MODEL_BIN=$<TARGET_FILE:cable_model> CABLE_DEVEL_SETUP=${CATKIN_DEVEL_PREFIX}/setup.bash)
-add_dependencies(run_tests_cable_dynamics_pytest_python_bindings cable_model cable_dynamics_python)
+  CABLE_MODEL_BIN=$<TARGET_FILE:cable_model> CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>
+  CABLE_DEVEL_SETUP=${CATKIN_DEVEL_PREFIX}/setup.bash)
+add_dependencies(run_tests_cable_dynamics_pytest_python_bindings cable_model cable_sim cable_dynamics_python)
 cable_add_pytest(unreliable_runs test/test_unreliable_runs.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
 add_dependencies(run_tests_cable_dynamics_pytest_unreliable_runs cable_sim)
 cable_add_pytest(beam_catenary test/test_beam_catenary.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
