@@ -5,6 +5,11 @@ catkin_add_gtest(test_config_loader test/test_config_loader.cpp)
 target_link_libraries(test_config_loader cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 target_compile_definitions(test_config_loader PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
+# docs/CONFIG.md names exactly the keys the loader reads.
+catkin_add_gtest(test_config_keys test/test_config_keys.cpp)
+target_link_libraries(test_config_keys cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_config_keys PRIVATE CABLE_DOCS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/docs")
+
 catkin_add_gtest(test_paper_model test/test_paper_model.cpp)
 target_link_libraries(test_paper_model cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
