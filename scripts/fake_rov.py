@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Demo driver: a fake ROV pose (geometry_msgs/PoseStamped on rov_pose) that rises 6 m from the cable's
 hanging tip and then circles, and a slowly varying current (geometry_msgs/TwistStamped on current), both
-in the world frame. For launch/demo.launch; parameters ~world_frame, ~depth (m, the tip's rest depth),
+in the world frame. For launch/demo.launch; parameters ~world_frame (default: the cable node's ros.world_frame in
+the same namespace, else "world"), ~depth (m, the tip's rest depth),
 ~radius (m), ~period (s), ~rate (Hz)."""
 import math
 
@@ -11,7 +12,7 @@ from geometry_msgs.msg import PoseStamped, TwistStamped
 
 def main():
     rospy.init_node("fake_rov")
-    frame = rospy.get_param("~world_frame", "world")
+    frame = rospy.get_param("~world_frame", rospy.get_param("cable_dynamics_node/ros/world_frame", "world"))
     depth = float(rospy.get_param("~depth", 50.0))
     radius = float(rospy.get_param("~radius", 8.0))
     period = float(rospy.get_param("~period", 120.0))

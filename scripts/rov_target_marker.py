@@ -9,7 +9,7 @@ published until the marker is first moved, so it never fights another pose sourc
 pose is republished at ~rate Hz with fresh stamps (the cable node treats an old pose as stale). Drag the
 translucent box in the view plane, the arrows along the world axes, the ring to turn the ROV about the vertical.
 
-Parameters: ~world_frame (default "world"), ~rov_frame, ~initial_position ([x, y, z], default [0, 0, -50]),
+Parameters: ~world_frame (default: the cable node's ros.world_frame in the same namespace, else "world"), ~rov_frame, ~initial_position ([x, y, z], default [0, 0, -50]),
 ~wait (s, default 10), ~rate (Hz, default 20), ~scale (m, default 3: the marker's size).
 Topics: rov_pose (out), rov_target_marker/update, /update_full, /feedback (the interactive marker's)."""
 import math
@@ -84,7 +84,7 @@ def make_marker(world_frame, pose, scale):
 
 class RovTargetMarker:
     def __init__(self):
-        self.world_frame = rospy.get_param("~world_frame", "world")
+        self.world_frame = rospy.get_param("~world_frame", rospy.get_param("cable_dynamics_node/ros/world_frame", "world"))
         rov_frame = rospy.get_param("~rov_frame", default_rov_frame())
         initial = [float(v) for v in rospy.get_param("~initial_position", [0.0, 0.0, -50.0])]
         wait = float(rospy.get_param("~wait", 10.0))

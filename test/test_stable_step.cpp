@@ -138,7 +138,7 @@ TEST(StableStep, BoundsTheLinearizedSpectrumAndRk4RunsAtItsRecommendation) {
   for (const Row& row : rows) {
     CableParams params = loadConfigFile(dir + row.config, row.overrides);
     params.simulation.integrator = Integrator::kRk4;
-    CableSimulator start(params);
+    CableSimulator start(params, SimulatorUse::kUnjudgedStep);  // the preset's dt, only for the truth: not stepped
     const StableStep s = estimateStableStep(params, start.properties());
     // The ends' inputs at t = 0 (the coupling's target only shifts the forcing, not the Jacobian).
     EndConditions ends(params.base, params.load, params.winch);
@@ -176,7 +176,7 @@ TEST(StableStep, SpringAndDamperOfOneModeTakenTogether) {
   const double critical = 2.0 * std::sqrt(props.stiffness_torsion(1) * props.inertia_polar(1));
   for (double zeta : {0.0, 0.3, 0.57, 0.8, 1.5, 5.0}) {
     const CableParams q = loadConfigString(base, {"cable.damping.torsion=" + std::to_string(zeta * critical)});
-    CableSimulator sim(q);
+    CableSimulator sim(q, SimulatorUse::kUnjudgedStep);  // only for the truth: not stepped
     const StableStep s = estimateStableStep(q, sim.properties());
     EndConditions ends(q.base, q.load, q.winch);
     const Truth truth = truthAt(sim, ends.at(0.0));

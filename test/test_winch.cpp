@@ -6,10 +6,12 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 
 #include <gtest/gtest.h>
 
 #include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/params/input_gate.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/simulation/winch.h"
 
@@ -75,6 +77,53 @@ TEST(Winch, SpeedRampsAtTheAccelerationLimitAndLengthIsItsIntegral) {
   }
   EXPECT_NEAR(winch.motion().length, p.min_length, 1e-3);
   EXPECT_GE(winch.motion().length, p.min_length - 1e-3);
+}
+
+// A command the winch cannot follow is refused with its range (params/input_gate.h), not clamped: the
+// command in force stays. (Before the gate, commandSpeed(5) silently became 1 m/s while the node refused it.)
+TEST(Winch, CommandsBeyondTheLimitsAreRefusedNotClamped) {
+  WinchParams p;
+  p.enabled = true;
+  p.min_length = 2.0;
+  p.max_length = 100.0;
+  p.max_speed = 1.0;
+  Winch winch(p);
+  winch.reset(10.0);
+  winch.commandSpeed(0.5);
+  for (const double bad : {1.5, -1.0000001, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    try {
+      winch.commandSpeed(bad);
+      ADD_FAILURE() << "speed " << bad << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("within +-1 m/s (winch.max_speed)"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(winch.commandedSpeed(), 0.5) << "a refused command changed the one in force";
+  EXPECT_FALSE(winch.targeting());
+  winch.commandSpeed(-1.0);  // the limit itself is accepted
+  EXPECT_EQ(winch.commandedSpeed(), -1.0);
+  for (const double bad : {1.999, 100.001, std::nan("")}) {
+    try {
+      winch.commandLength(bad);
+      ADD_FAILURE() << "length " << bad << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("[2, 100] m"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_FALSE(winch.targeting()) << "a refused target replaced the speed command";
+
+  // The simulator's setters refuse the same, with the same message; without a winch, every command.
+  CableSimulator sim(lowering(1025.0, 0.5, 60.0));
+  EXPECT_THROW(sim.commandWinchSpeed(2.5), std::invalid_argument);
+  EXPECT_EQ(sim.winch().commandedSpeed(), 0.5);
+  EXPECT_THROW(sim.commandWinchLength(61.0), std::invalid_argument);
+  CableSimulator fixed(loadConfigString("cable: {links: 2, length: 2.0, diameter: 0.02, mass_per_length: 0.5}\n"));
+  try {
+    fixed.commandWinchSpeed(0.1);
+    ADD_FAILURE() << "a winch command accepted without a winch";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), kNoWinchMessage);
+  }
 }
 
 TEST(Winch, ConfigAddsTheDrumsSlotsInFrontOfTheDeployedCable) {

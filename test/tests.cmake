@@ -5,6 +5,11 @@ catkin_add_gtest(test_config_loader test/test_config_loader.cpp)
 target_link_libraries(test_config_loader cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 target_compile_definitions(test_config_loader PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
+# docs/CONFIG.md names exactly the keys the loader reads.
+catkin_add_gtest(test_config_keys test/test_config_keys.cpp)
+target_link_libraries(test_config_keys cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_config_keys PRIVATE CABLE_DOCS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/docs")
+
 catkin_add_gtest(test_paper_model test/test_paper_model.cpp)
 target_link_libraries(test_paper_model cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
@@ -89,8 +94,9 @@ add_dependencies(run_tests_cable_dynamics_pytest_presets cable_sim)
 # The Python module (cable_dynamics/python/): run in the devel space's environment, and once more through
 # a fresh shell that sources its setup.bash, as the README's example is run.
 cable_add_pytest(python_bindings test/test_python_bindings.py
-  CABLE_MODEL_BIN=$<TARGET_FILE:cable_model> CABLE_DEVEL_SETUP=${CATKIN_DEVEL_PREFIX}/setup.bash)
-add_dependencies(run_tests_cable_dynamics_pytest_python_bindings cable_model cable_dynamics_python)
+  CABLE_MODEL_BIN=$<TARGET_FILE:cable_model> CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>
+  CABLE_DEVEL_SETUP=${CATKIN_DEVEL_PREFIX}/setup.bash)
+add_dependencies(run_tests_cable_dynamics_pytest_python_bindings cable_model cable_sim cable_dynamics_python)
 cable_add_pytest(unreliable_runs test/test_unreliable_runs.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
 add_dependencies(run_tests_cable_dynamics_pytest_unreliable_runs cable_sim)
 cable_add_pytest(beam_catenary test/test_beam_catenary.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)

@@ -3,7 +3,9 @@
 earlier launch in the same namespace no longer stops the node), and a bad config stops the launch: the
 node exits 2 naming the key, and roslaunch, for which the node is required, shuts down.
 roslaunch 1.15 (Debian 12) exits 0 even when a required node dies (measured); the test checks its output
-instead, which names the dead process and its exit code."""
+instead, which names the dead process and its exit code.
+Issue 22: an argument that is not given (rate, world_frame) leaves the config's own ros.rate and
+ros.world_frame; a given one replaces it."""
 import os
 import subprocess
 import tempfile
@@ -18,11 +20,13 @@ from cable_msgs.msg import CableState
 
 GOOD_CONFIG = "cable: {links: 3, length: 6.0, diameter: 0.02, mass_per_length: 0.5}\n"
 BAD_CONFIG = "cable: {links: 0, length: 6.0, diameter: 0.02, mass_per_length: 0.5}\n"
+# A config with its own ros section: neither value is umbilical.launch's or the node's default.
+OWN_ROS_CONFIG = GOOD_CONFIG + "ros: {rate: 37.0, world_frame: sea}\n"
 
 
-def roslaunch(namespace, config):
+def roslaunch(namespace, config, *args):
     return subprocess.Popen(["roslaunch", "cable_dynamics", "umbilical.launch", "ns:=" + namespace,
-                             "config:=" + config, "rviz:=false"],
+                             "config:=" + config, "rviz:=false"] + list(args),
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 
 
@@ -33,6 +37,9 @@ class LaunchFile(unittest.TestCase):
         cls.dir = tempfile.mkdtemp()
         cls.good = os.path.join(cls.dir, "good.yaml")
         cls.bad = os.path.join(cls.dir, "bad.yaml")
+        cls.own_ros = os.path.join(cls.dir, "own_ros.yaml")
+        with open(cls.own_ros, "w") as f:
+            f.write(OWN_ROS_CONFIG)
         with open(cls.good, "w") as f:
             f.write(GOOD_CONFIG)
         with open(cls.bad, "w") as f:
@@ -59,6 +66,24 @@ class LaunchFile(unittest.TestCase):
             launch.terminate()
             output, _ = launch.communicate(timeout=30)
         self.assertNotIn("bad parameter", output)
+
+    def running_ros_params(self, namespace, *args):
+        """ros.rate and ros.world_frame on the node's parameters, while it runs from OWN_ROS_CONFIG."""
+        launch = roslaunch(namespace, self.own_ros, *args)
+        try:
+            with self.assertRaises(subprocess.TimeoutExpired, msg="roslaunch ended: the node stopped"):
+                launch.wait(timeout=8)
+            node = "/" + namespace + "/cable_dynamics_node/ros/"
+            return rospy.get_param(node + "rate"), rospy.get_param(node + "world_frame")
+        finally:
+            launch.terminate()
+            launch.communicate(timeout=30)
+
+    def test_arguments_not_given_leave_the_configs_ros_keys(self):
+        self.assertEqual(self.running_ros_params("own_ros"), (37.0, "sea"))
+
+    def test_arguments_given_replace_the_configs_ros_keys(self):
+        self.assertEqual(self.running_ros_params("given_ros", "rate:=50.0", "world_frame:=map"), (50.0, "map"))
 
     def test_a_bad_config_stops_the_launch_with_the_key_and_exit_code_2(self):
         launch = roslaunch("bad_launch", self.bad)

@@ -1,15 +1,23 @@
 // Live tuning without a roscore: the simulator's retune() against simulators configured with the tuned
 // values from the start, and the node's checks (tuning_checks.h) against the config loader's ranges.
+#include <algorithm>
 #include <cmath>
+#include <regex>
+#include <set>
 #include <string>
 #include <vector>
+
+#include <boost/any.hpp>
 
 #include <gtest/gtest.h>
 
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/params/config_section.h"
 #include "cable_dynamics/dynamics/state_layout.h"
+#include "cable_dynamics/TuningConfig.h"
+#include "cable_dynamics/ros/node_options.h"
 #include "cable_dynamics/ros/tuning_checks.h"
+#include "cable_dynamics/simulation/tunable_keys.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
 
 namespace cable_dynamics {
@@ -223,6 +231,91 @@ TEST(TuningChecks, CurrentRateAndWinchSpeed) {
   EXPECT_FALSE(checkTunedWinchSpeed(2.5, winch, why));
   EXPECT_NE(why.find("winch.max_speed"), std::string::npos) << why;
   EXPECT_FALSE(checkTunedWinchSpeed(std::nan(""), winch, why));
+}
+
+}  // namespace cable_dynamics
+
+// cfg/Tuning.cfg against the one list of tunable keys (kTunableParameters, and the core's kTunableKeys
+// for the coefficients): the same names, types and levels, the loader's defaults, and the range each
+// description prints equal to the one the checks refuse with (issue 22: the keys were listed in six places).
+namespace cable_dynamics {
+namespace {
+
+/// The bounds of the first "[a, b]" or "(a, b]" in `text`, as numbers (1e9 and 1e+09 alike).
+bool rangeIn(const std::string& text, double& lo, double& hi) {
+  std::smatch m;
+  const std::regex range(R"([\[(]\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*\])");
+  if (!std::regex_search(text, m, range)) return false;
+  lo = std::stod(m[1]);
+  hi = std::stod(m[2]);
+  return true;
+}
+
+/// The message the checks refuse `name` = `value` with.
+std::string refusal(const TunableParameter& t, double value) {
+  const CableParams params = loadConfigString(kCable);
+  TunableValues v = tunableValuesOf(params, 100.0);
+  t.at(v) = value;
+  std::string why;
+  try {
+    if (t.level == kTuneCurrent) checkTunedCurrent(v.current);
+    if (t.level == kTuneRate) checkTunedRate(YAML::Node(), v.rate);
+    if (t.level == kTuneCoefficients) {
+      YAML::Node tree;
+      tunedParams(YAML::Load(kCable), v, tree);
+    }
+    if (t.level == kTuneWinch) {
+      WinchParams winch;
+      winch.enabled = true;
+      winch.max_speed = 2.0;
+      checkTunedWinchSpeed(value, winch, why);
+    }
+  } catch (const std::invalid_argument& e) {
+    why = e.what();
+  }
+  return why;
+}
+
+}  // namespace
+
+TEST(TuningTable, TheCfgHasExactlyTheTablesParameters) {
+  const auto& described = TuningConfig::__getParamDescriptions__();
+  std::set<std::string> names;
+  for (const TuningConfig::AbstractParamDescriptionConstPtr& d : described) names.insert(d->name);
+  ASSERT_EQ(names.size(), kTunableParameters.size());
+  std::set<std::string> coefficient_keys;
+  const TuningConfig& defaults = TuningConfig::__getDefault__();
+  const CableParams loader_defaults = loadConfigString("cable: {links: 2, length: 2.0, diameter: 0.02, mass_per_length: 1.0}");
+  TunableValues start = tunableValuesOf(loader_defaults, NodeOptions().rate);
+  for (const TunableParameter& t : kTunableParameters) {
+    SCOPED_TRACE(t.name);
+    auto found = std::find_if(described.begin(), described.end(), [&](const auto& d) { return d->name == t.name; });
+    ASSERT_NE(found, described.end()) << "cfg/Tuning.cfg has no " << t.name;
+    EXPECT_EQ((*found)->level, t.level);
+    EXPECT_EQ((*found)->type, t.at != nullptr ? "double" : "bool");
+    if (t.at == nullptr) continue;
+    // The cfg's default is what a node started from a config without these keys shows.
+    boost::any value;
+    (*found)->getValue(defaults, value);
+    EXPECT_EQ(boost::any_cast<double>(value), t.at(start));
+    if (t.level == kTuneCoefficients) coefficient_keys.insert(t.key);
+    // The range the description prints is the one a refusal names (far outside it: 1e12).
+    const std::string why = refusal(t, 1e12);
+    ASSERT_FALSE(why.empty()) << "1e12 accepted";
+    EXPECT_NE(why.find(t.key), std::string::npos) << why;
+    double lo = 0.0, hi = 0.0, cfg_lo = 0.0, cfg_hi = 0.0;
+    if (t.level == kTuneWinch) {
+      EXPECT_NE((*found)->description.find("winch.max_speed"), std::string::npos) << (*found)->description;
+      continue;
+    }
+    ASSERT_TRUE(rangeIn(why, lo, hi)) << why;
+    ASSERT_TRUE(rangeIn((*found)->description, cfg_lo, cfg_hi)) << (*found)->description;
+    EXPECT_EQ(cfg_lo, lo) << (*found)->description << " | " << why;
+    EXPECT_EQ(cfg_hi, hi) << (*found)->description << " | " << why;
+  }
+  std::set<std::string> core_keys;
+  for (const TunableKey& k : kTunableKeys) core_keys.insert(k.key);
+  EXPECT_EQ(coefficient_keys, core_keys) << "the node tunes other coefficients than the core's retune takes";
 }
 
 }  // namespace cable_dynamics

@@ -2,7 +2,7 @@
 """A sweep over the current's speed: the top tension of a 50 m umbilical holding a 10 kg load at rest."""
 import cable_dynamics
 
-config = {  # the keys of a config file (README.md, "Configuration"), checked the same way
+config = {  # the keys of a config file (docs/CONFIG.md), checked the same way
     "cable": {"links": 25, "length": 50.0, "diameter": 0.025, "mass_per_length": 0.6},
     "load": {"mass": 10.0, "volume": 0.005},
     "fluid": {"density": 1025.0, "drag_normal": 1.2, "drag_tangential": 0.01},

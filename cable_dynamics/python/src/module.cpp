@@ -42,7 +42,7 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
   using namespace cable_dynamics::python;
   m.doc() =
       "The n-link umbilical of cable_dynamics (Gomes et al. 2016) from Python. Build a Simulator from a config "
-      "file or a dict (the keys of README.md, 'Configuration'), step it, read snapshots and the model's "
+      "file or a dict (the keys of docs/CONFIG.md), step it, read snapshots and the model's "
       "matrices as numpy arrays, set the current, the targets and the winch. Outputs are in the paper frame "
       "(base at the origin, z down); inputs in world axes (z up) from the base's rest position.";
 
@@ -107,7 +107,7 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
       .def_property_readonly("energy_drift", &PythonSimulator::energyDrift,
                              "drift of the energy balance as a fraction of the energy scale (RK4; -1 otherwise)")
       .def_property_readonly("retried_steps", &PythonSimulator::retriedSteps)
-      .def("stable_time_step", &PythonSimulator::stableTimeStep, "the largest stable RK4 dt estimate [s]")
+      .def("stable_time_step", &PythonSimulator::stableTimeStep, "the recommended RK4 dt: half its estimated stability limit [s]")
       .def("snapshot", &PythonSimulator::snapshot, "The present instant as a Snapshot (numpy arrays).")
       .def("model", &PythonSimulator::model, "The paper model's matrices at the present state.")
       .def("set_state", &PythonSimulator::setState, "q"_a, "qd"_a, "Paper coordinates (3n) [rad], rates [rad/s].")

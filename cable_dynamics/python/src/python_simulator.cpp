@@ -12,12 +12,6 @@ namespace cable_dynamics {
 namespace python {
 namespace {
 
-/// The node's limits on the same inputs (ros/input_guard.h): positions within 1e6 m, speeds within 20 m/s,
-/// the current within 100 m/s (the config's range for fluid.current).
-constexpr double kMaxPosition = 1e6;   // [m]
-constexpr double kMaxSpeed = 20.0;     // [m/s]
-constexpr double kMaxCurrent = 100.0;  // [m/s]
-
 template <class Vector>
 std::string describe(const Vector& v) {
   std::ostringstream s;
@@ -28,16 +22,7 @@ std::string describe(const Vector& v) {
   return s.str();
 }
 
-/// Throws std::invalid_argument unless every component of `v` is finite with |v_i| <= limit.
-template <class Vector>
-void checkComponents(const char* name, const Vector& v, double limit, const char* unit) {
-  if (!v.allFinite() || v.cwiseAbs().maxCoeff() > limit) {
-    std::ostringstream s;
-    s << name << " = " << describe(v) << ": expected finite components within +-" << limit << " " << unit;
-    throw std::invalid_argument(s.str());
-  }
-}
-
+/// Python's (x, y, z, w) as a quaternion; the simulator's setter checks it (params/input_gate.h).
 Eigen::Quaterniond attitude(const char* name, const Eigen::Vector4d& xyzw) {
   const double norm = xyzw.norm();
   if (!xyzw.allFinite() || norm < 1e-6) {
@@ -127,49 +112,24 @@ StaticSolution PythonSimulator::resetToEquilibrium() {
   return s;
 }
 
-void PythonSimulator::setCurrent(const Eigen::Vector3d& current) {
-  checkComponents("current", current, kMaxCurrent, "m/s");
-  sim_.setCurrent(current);
-}
+// The values are checked by the simulator's setters (params/input_gate.h): the same limits and messages
+// as the node, live tuning and cable_sim's config.
+
+void PythonSimulator::setCurrent(const Eigen::Vector3d& current) { sim_.setCurrent(current); }
 
 void PythonSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                                     const Eigen::Vector4d& xyzw) {
-  checkComponents("position", position, kMaxPosition, "m");
-  checkComponents("velocity", velocity, kMaxSpeed, "m/s");
   sim_.setLoadTarget(position, velocity, attitude("attitude", xyzw));
 }
 
 void PythonSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                                     const Eigen::Vector4d& xyzw) {
-  checkComponents("position", position, kMaxPosition, "m");
-  checkComponents("velocity", velocity, kMaxSpeed, "m/s");
   sim_.setBaseTarget(position, velocity, attitude("attitude", xyzw));
 }
 
-void PythonSimulator::commandWinchSpeed(double speed) {
-  if (!sim_.hasWinch()) throw std::invalid_argument("winch speed: this cable has no winch (no winch: section)");
-  const double limit = params_.winch.max_speed;
-  if (!std::isfinite(speed) || std::abs(speed) > limit) {
-    std::ostringstream s;
-    s.precision(17);
-    s << "speed = " << speed << ": expected a finite speed within +-" << limit << " m/s (winch.max_speed)";
-    throw std::invalid_argument(s.str());
-  }
-  sim_.commandWinchSpeed(speed);
-}
+void PythonSimulator::commandWinchSpeed(double speed) { sim_.commandWinchSpeed(speed); }
 
-void PythonSimulator::commandWinchLength(double length) {
-  if (!sim_.hasWinch()) throw std::invalid_argument("winch length: this cable has no winch (no winch: section)");
-  const WinchParams& w = params_.winch;
-  if (!std::isfinite(length) || length < w.min_length || length > w.max_length) {
-    std::ostringstream s;
-    s.precision(17);
-    s << "length = " << length << ": expected a length in [" << w.min_length << ", " << w.max_length
-      << "] m (winch.min_length, winch.max_length)";
-    throw std::invalid_argument(s.str());
-  }
-  sim_.commandWinchLength(length);
-}
+void PythonSimulator::commandWinchLength(double length) { sim_.commandWinchLength(length); }
 
 }  // namespace python
 }  // namespace cable_dynamics

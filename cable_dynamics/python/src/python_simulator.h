@@ -80,7 +80,7 @@ class PythonSimulator {
   /// Throws std::runtime_error with the solver's reason when there is no equilibrium.
   StaticSolution resetToEquilibrium();
 
-  /// Uniform current, world axes (z up) [m/s]; each component finite and within 100 m/s.
+  /// Uniform current, world axes (z up) [m/s]; fluid.current's range (the simulator checks every value).
   void setCurrent(const Eigen::Vector3d& current);
   /// The ROV's attachment point (load modes anchored / attached), world axes from the base's rest position
   /// [m], its velocity [m/s], the ROV's attitude as a unit quaternion (x, y, z, w; normalized here).

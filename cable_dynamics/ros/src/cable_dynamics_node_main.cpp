@@ -1,4 +1,4 @@
-// cable_dynamics_node: simulates one umbilical; parameters from the private namespace (see README).
+// cable_dynamics_node: simulates one umbilical; parameters from the private namespace (docs/NODE.md).
 #include <ros/ros.h>
 
 #include "cable_dynamics/params/config_loader.h"

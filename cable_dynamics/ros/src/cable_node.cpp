@@ -36,8 +36,9 @@ const char* loadModeName(LoadMode mode) {
 CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), private_nh_(private_nh), tf_listener_(tf_buffer_), clock_(1.0) {
   loadNodeParameters(private_nh_, params_, options_, &config_tree_, &ros_tree_);
-  sim_ = std::make_unique<CableSimulator>(params_);  // throws std::invalid_argument on a refused combination
-  requireStableTimeStep(params_, sim_->properties());  // a dt beyond RK4's reach: refused at start, naming it
+  // The gate (checkSimulatorInputs) refuses a dt beyond RK4's reach and the combinations the simulator
+  // cannot run, throwing ConfigError naming the key, as cable_sim and Python do.
+  sim_ = std::make_unique<CableSimulator>(params_);
   names_.prefix = options_.frame_prefix;
   clock_ = SimClock(options_.max_lag);
 
@@ -62,8 +63,8 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                                      << "', frame prefix '" << options_.frame_prefix << "', input timeout "
                                      << options_.input_timeout << " s, at most " << options_.max_steps_per_cycle
                                      << " steps per cycle, max lag " << options_.max_lag
-                                     << " s; estimated largest stable RK4 step " << sim_->estimateStableTimeStep()
-                                     << " s");
+                                     << " s; recommended RK4 step " << sim_->estimateStableTimeStep()
+                                     << " s (half its estimated stability limit)");
   if (params_.winch.enabled) {
     const WinchParams& w = params_.winch;
     ROS_INFO_STREAM("cable_dynamics: winch at the base: " << sim_->deployedLength() << " m deployed in "
@@ -146,14 +147,14 @@ TunableValues CableNode::applyTuning(const TunableValues& wanted, unsigned level
       sim_->retune(tuned);  // RK4's stable step too; rebuilds the chain's constants between two cycles
       params_ = tuned;
       config_tree_ = tree;
-      tuned_.drag_normal = wanted.drag_normal;
-      tuned_.drag_tangential = wanted.drag_tangential;
-      tuned_.added_mass = wanted.added_mass;
-      tuned_.coupling_stiffness = wanted.coupling_stiffness;
-      tuned_.coupling_damping = wanted.coupling_damping;
-      ROS_INFO_STREAM("cable_dynamics: tuning: drag_normal " << wanted.drag_normal << ", drag_tangential "
-                      << wanted.drag_tangential << ", added_mass " << wanted.added_mass << ", coupling "
-                      << wanted.coupling_stiffness << " N/m, " << wanted.coupling_damping << " N s/m");
+      TunableValues given = wanted;
+      std::ostringstream text;
+      for (const TunableParameter& t : kTunableParameters) {
+        if (t.level != kTuneCoefficients) continue;
+        t.at(tuned_) = t.at(given);
+        text << (text.tellp() > 0 ? ", " : "") << t.key << " " << t.at(given);
+      }
+      ROS_INFO_STREAM("cable_dynamics: tuning: " << text.str());
     } catch (const std::invalid_argument& e) {
       refused("coefficients", e.what());
     }

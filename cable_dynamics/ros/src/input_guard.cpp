@@ -27,6 +27,7 @@ bool finite(const geometry_msgs::Twist& t) {
          std::isfinite(t.angular.x) && std::isfinite(t.angular.y) && std::isfinite(t.angular.z);
 }
 
+/// The raw message's position, before the frame's transform (a finite number beyond it is no pose).
 bool inRange(const Eigen::Vector3d& p) { return p.cwiseAbs().maxCoeff() <= kMaxInputPosition; }
 
 }  // namespace
@@ -96,7 +97,8 @@ InputVerdict InputGuard::pose(Topic topic, const geometry_msgs::PoseStamped& msg
   }
   const Eigen::Vector3d& body_point = topic == kRovPose ? settings_.rov_attachment : settings_.base_hang_off;
   const Eigen::Vector3d world = world_from_frame * (raw + in_frame * body_point);
-  if (!inRange(world)) return settle(topic, InputVerdict::kOutOfRange, stamp, now);
+  // What the node hands the simulator: the position from the base's rest position (the gate's range).
+  if (!positionAllowed(world - settings_.base_rest)) return settle(topic, InputVerdict::kOutOfRange, stamp, now);
   attitude = Eigen::Quaterniond(world_from_frame.linear()) * in_frame;
   const InputVerdict timing = checkStamp(topic, stamp, now);
   if (!isAccepted(timing)) return settle(topic, timing, stamp, now);
@@ -116,13 +118,15 @@ InputVerdict InputGuard::current(const geometry_msgs::TwistStamped& msg, const r
   const ros::Time& stamp = msg.header.stamp;
   if (!finite(msg.twist)) return settle(kCurrent, InputVerdict::kNonFinite, stamp, now);
   const Eigen::Vector3d raw(msg.twist.linear.x, msg.twist.linear.y, msg.twist.linear.z);
-  if (raw.norm() > kMaxCurrentSpeed) return settle(kCurrent, InputVerdict::kOutOfRange, stamp, now);
   Eigen::Isometry3d world_from_frame;
   const InputVerdict frame = frameTransform(msg.header.frame_id, resolve, world_from_frame);
   if (!isAccepted(frame)) return settle(kCurrent, frame, stamp, now);
+  // In world axes, as the simulator takes it: the gate's range (fluid.current's).
+  const Eigen::Vector3d world = world_from_frame.linear() * raw;  // a velocity: rotated, not translated
+  if (!currentAllowed(world)) return settle(kCurrent, InputVerdict::kOutOfRange, stamp, now);
   const InputVerdict timing = checkStamp(kCurrent, stamp, now);
   if (!isAccepted(timing)) return settle(kCurrent, timing, stamp, now);
-  current = world_from_frame.linear() * raw;  // a velocity: rotated, not translated
+  current = world;
   return settle(kCurrent, InputVerdict::kAccepted, stamp, now);
 }
 
@@ -133,7 +137,7 @@ InputVerdict InputGuard::winchSpeed(const std_msgs::Float64& msg, double& speed)
     verdict = InputVerdict::kNoWinch;
   } else if (!std::isfinite(msg.data)) {
     verdict = InputVerdict::kNonFinite;
-  } else if (std::abs(msg.data) > settings_.winch_max_speed) {
+  } else if (!winchSpeedAllowed(msg.data, settings_.winch_max_speed)) {  // the gate's check
     verdict = InputVerdict::kOutOfRange;
   }
   if (isAccepted(verdict)) {

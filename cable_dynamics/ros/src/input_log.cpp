@@ -18,7 +18,7 @@ void logInput(const char* topic, InputVerdict verdict, const InputCounters& c, c
                         c.rejected);
       break;
     case InputVerdict::kOutOfRange:
-      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s (|position| <= %g m, |current| <= %g m/s): ignored (%u "
+      ROS_WARN_THROTTLE(kLogPeriod, "cable_dynamics: %s %s (|position component| <= %g m, |current component| <= %g m/s): ignored (%u "
                         "rejected so far)", topic, describe(verdict), kMaxInputPosition, kMaxCurrentSpeed, c.rejected);
       break;
     case InputVerdict::kBadFrame:

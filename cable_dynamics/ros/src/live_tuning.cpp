@@ -1,34 +1,46 @@
 #include "cable_dynamics/ros/live_tuning.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace cable_dynamics {
 namespace {
 
+/// The generated config's field of parameter `name` (cfg/Tuning.cfg) of type T; throws when the cfg has none.
+template <class T>
+T TuningConfig::*fieldOf(const std::string& name) {
+  for (const TuningConfig::AbstractParamDescriptionConstPtr& d : TuningConfig::__getParamDescriptions__()) {
+    if (d->name != name) continue;
+    const auto typed = boost::dynamic_pointer_cast<const TuningConfig::ParamDescription<T>>(d);
+    if (typed) return typed->field;
+  }
+  throw std::logic_error("cfg/Tuning.cfg has no parameter " + name + " of the type kTunableParameters gives it");
+}
+
+// The values move between the generated config and TunableValues by kTunableParameters (tuning_checks.h):
+// one list of tunable keys.
+
 TunableValues fromConfig(const TuningConfig& c) {
   TunableValues v;
-  v.current = Eigen::Vector3d(c.current_x, c.current_y, c.current_z);
-  v.drag_normal = c.drag_normal;
-  v.drag_tangential = c.drag_tangential;
-  v.added_mass = c.added_mass;
-  v.coupling_stiffness = c.coupling_stiffness;
-  v.coupling_damping = c.coupling_damping;
-  v.rate = c.rate;
-  v.paused = c.paused;
-  v.winch_speed = c.winch_speed;
+  for (const TunableParameter& t : kTunableParameters) {
+    if (t.at != nullptr) {
+      t.at(v) = c.*fieldOf<double>(t.name);
+    } else {
+      v.paused = c.*fieldOf<bool>(t.name);
+    }
+  }
   return v;
 }
 
-void toConfig(const TunableValues& v, TuningConfig& c) {
-  c.current_x = v.current.x();
-  c.current_y = v.current.y();
-  c.current_z = v.current.z();
-  c.drag_normal = v.drag_normal;
-  c.drag_tangential = v.drag_tangential;
-  c.added_mass = v.added_mass;
-  c.coupling_stiffness = v.coupling_stiffness;
-  c.coupling_damping = v.coupling_damping;
-  c.rate = v.rate;
-  c.paused = v.paused;
-  c.winch_speed = v.winch_speed;
+void toConfig(const TunableValues& values, TuningConfig& c) {
+  TunableValues v = values;
+  for (const TunableParameter& t : kTunableParameters) {
+    if (t.at != nullptr) {
+      c.*fieldOf<double>(t.name) = t.at(v);
+    } else {
+      c.*fieldOf<bool>(t.name) = v.paused;
+    }
+  }
 }
 
 }  // namespace

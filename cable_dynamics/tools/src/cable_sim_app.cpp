@@ -166,8 +166,8 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   if (o.statics) params.initial.mode = InitialMode::kAngles;  // solved below, with its report
   std::unique_ptr<CableSimulator> simulator;
   try {
-    simulator = std::make_unique<CableSimulator>(params);
-    if (!o.statics) requireStableTimeStep(params, simulator->properties());  // beyond RK4's reach: refused
+    // The gate (checkSimulatorInputs): a dt beyond RK4's reach is refused, unless only the statics run.
+    simulator = std::make_unique<CableSimulator>(params, o.statics ? SimulatorUse::kStaticsOnly : SimulatorUse::kStepping);
   } catch (const std::invalid_argument& e) {
     err << "cable_sim: " << e.what() << "\n";
     return 2;
@@ -179,7 +179,8 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   CableSimulator& sim = *simulator;
   const StableStep stable = estimateStableStep(params, sim.properties());
   err << "cable_sim: " << params.links << " links, " << integratorName(params.simulation.integrator) << ", dt = " << sim.dt()
-      << " s, estimated largest stable RK4 step " << stable.recommended << " s (" << stable.mode << ")";
+      << " s, recommended RK4 step " << stable.recommended << " s (half its estimated stability limit "
+      << stable.limit << " s; " << stable.mode << ")";
   if (params.simulation.integrator == Integrator::kImplicit) {
     err << "; implicit: recommended dt " << stable.implicit_recommended << " s (" << stable.implicit_mode << ")"
         << (sim.dt() > stable.implicit_recommended ? "  (dt is larger: less accurate, still stable)" : "") << "\n";

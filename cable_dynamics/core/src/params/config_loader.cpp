@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "cable_dynamics/params/input_gate.h"
 #include "seabed_config.h"
 
 namespace cable_dynamics {
@@ -61,20 +62,6 @@ void parseCable(Section cable, CableParams& p, CableRest& rest) {
   p.stiffness.torsion = stiffness.number("torsion", 0.0, 0.0, kInf, false, "N m/rad");
   p.stiffness.bending_rigidity = stiffness.number("bending_rigidity", 0.0, 0.0, kInf, false, "N m^2");
   p.stiffness.torsional_rigidity = stiffness.number("torsional_rigidity", 0.0, 0.0, kInf, false, "N m^2");
-  if (p.stiffness.bending_rigidity > 0.0 && (p.stiffness.elevation > 0.0 || p.stiffness.azimuth > 0.0)) {
-    throw ConfigError(stiffness.path() + ".bending_rigidity", std::to_string(p.stiffness.bending_rigidity),
-                      "0 when stiffness.elevation or stiffness.azimuth is given (one or the other)");
-  }
-  if (p.stiffness.torsional_rigidity > 0.0 && p.stiffness.torsion > 0.0) {
-    throw ConfigError(stiffness.path() + ".torsional_rigidity", std::to_string(p.stiffness.torsional_rigidity),
-                      "0 when stiffness.torsion is given (one or the other)");
-  }
-  if (p.stiffness.model == StiffnessModel::kBending && p.stiffness.azimuth != p.stiffness.elevation &&
-      p.stiffness.azimuth != 0.0) {
-    // One bending spring acts in every bending direction: a separate azimuth spring has no meaning there.
-    throw ConfigError(stiffness.path() + ".azimuth", std::to_string(p.stiffness.azimuth),
-                      "0 or equal to stiffness.elevation with model: bending (the bend spring is elevation)");
-  }
   stiffness.rejectUnknownKeys();
 
   Section damping = cable.sub("damping");
@@ -126,9 +113,6 @@ void parseLoad(Section load, CableParams& p) {
     }
     p.load.direction.normalize();
   }
-  if (p.load.fixity == TipFixity::kClamped && p.load.mode == LoadMode::kFree) {
-    throw ConfigError("load.fixity", "clamped", "pinned with load.mode: free (a clamp needs an anchor or an ROV to hold it)");
-  }
   load.rejectUnknownKeys();
 }
 
@@ -137,7 +121,7 @@ void parseFluid(Section fluid, CableParams& p) {
   p.fluid.drag_normal = fluid.number("drag_normal", 1.2, 0.0, 100.0, false, "");
   p.fluid.drag_tangential = fluid.number("drag_tangential", 0.01, 0.0, 100.0, false, "");
   p.fluid.added_mass = fluid.number("added_mass", 1.0, 0.0, 100.0, false, "");
-  p.fluid.current = vector3(fluid, "current", 100.0, "m/s");
+  p.fluid.current = vector3(fluid, "current", kMaxCurrentSpeed, "m/s");  // the setter's range too
   p.fluid.drag_points = fluid.integer("drag_points", 3, 1, 8, false);
   if (fluid.has("current_profile")) {
     const YAML::Node rows = fluid.raw("current_profile");
@@ -248,11 +232,6 @@ void parseAttachments(const YAML::Node& rows, CableParams& p) {
 /// `winch:` (after everything else: it adds the drum's slots in front of the configured cable).
 void parseWinch(Section winch, CableParams& p) {
   WinchParams& w = p.winch;
-  if (!p.attachments.empty()) {
-    // The winch's link changes length and the links move along their slots as it pays out: an
-    // attachment would have to ride through the winch (not modelled).
-    throw ConfigError("attachments", std::to_string(p.attachments.size()) + " given", "none with a winch (not modelled yet)");
-  }
   const double deployed = p.totalLength();
   const double link = p.link_lengths.front();
   w.enabled = true;
@@ -287,17 +266,6 @@ void parseWinch(Section winch, CableParams& p) {
     }
   }
   winch.rejectUnknownKeys();
-  // The winch's link moves with the paid-out cable and has a length of its own: the recursion's
-  // formulation, and springs of the bending model (docs/MODEL.md section 8).
-  if (p.simulation.formulation != Formulation::kRecursive) {
-    throw ConfigError("simulation.formulation", "paper", "recursive with a winch");
-  }
-  if (p.simulation.integrator == Integrator::kSemiImplicit) {
-    throw ConfigError("simulation.integrator", integratorName(p.simulation.integrator), "rk4 or implicit with a winch");
-  }
-  if (p.stiffness.model == StiffnessModel::kPaper && (p.stiffness.elevation > 0.0 || p.damping.elevation > 0.0)) {
-    throw ConfigError("cable.stiffness.model", "paper", "bending when a winch pays out a cable with springs or dampers");
-  }
   // Slots for the longest deployment: one more than the whole links it adds, since the winch's link
   // is between one and 2.25 links long.
   const int stored = static_cast<int>(std::ceil((w.max_length - deployed) / link - 1e-9)) + 1;
@@ -364,17 +332,7 @@ CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   simulation.rejectUnknownKeys();
   if (top.has("winch")) parseWinch(top.sub("winch"), p);
   top.rejectUnknownKeys();
-  if (p.load.fixity == TipFixity::kClamped && p.stiffness.model != StiffnessModel::kBending) {
-    throw ConfigError("load.fixity", "clamped", "pinned with cable.stiffness.model: paper; use model: bending");
-  }
-  // The paper's springs act on absolute angles measured from the vertical: a clamp direction or a pin
-  // has no meaning for them.
-  const bool default_base = p.base.fixity == BaseFixity::kClamped && (p.base.direction + Eigen::Vector3d::UnitZ()).norm() < 1e-12;
-  if (p.stiffness.model == StiffnessModel::kPaper && !default_base) {
-    throw ConfigError(p.base.fixity == BaseFixity::kPinned ? "base.fixity" : "base.direction",
-                      p.base.fixity == BaseFixity::kPinned ? "pinned" : "not straight down",
-                      "the default (clamped, [0, 0, -1]) with cable.stiffness.model: paper; use model: bending");
-  }
+  checkConfigRules(p);  // the rules between keys (params/input_gate.h)
   return p;
 }
 

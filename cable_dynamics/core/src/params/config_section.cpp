@@ -70,18 +70,39 @@ YAML::Node ConfigSection::at(const std::string& key) const {
 
 std::string ConfigSection::full(const std::string& key) const { return join(path_, key); }
 
-bool ConfigSection::has(const std::string& key) {
+namespace {
+thread_local ConfigKeyLog* active_log = nullptr;
+}  // namespace
+
+ConfigKeyLog::ConfigKeyLog() : previous_(active_log) { active_log = this; }
+
+ConfigKeyLog::~ConfigKeyLog() { active_log = previous_; }
+
+std::set<std::string> ConfigKeyLog::keys() const {
+  std::set<std::string> out;
+  for (const std::string& k : asked_) {
+    if (sections_.count(k) == 0) out.insert(k);
+  }
+  return out;
+}
+
+void ConfigSection::mark(const std::string& key, bool section) {
   known_.insert(key);
+  if (active_log != nullptr) (section ? active_log->sections_ : active_log->asked_).insert(full(key));
+}
+
+bool ConfigSection::has(const std::string& key) {
+  mark(key);
   return node_.IsDefined() && !node_.IsNull() && at(key).IsDefined() && !at(key).IsNull();
 }
 
 ConfigSection ConfigSection::sub(const std::string& key) {
-  known_.insert(key);
+  mark(key, true);
   return ConfigSection(has(key) ? at(key) : YAML::Node(), full(key));
 }
 
 YAML::Node ConfigSection::raw(const std::string& key) {
-  known_.insert(key);
+  mark(key);
   return at(key);
 }
 
@@ -147,7 +168,7 @@ std::vector<double> ConfigSection::perJoint(const std::string& key, int count, d
 
 std::vector<double> ConfigSection::numberList(const std::string& key, int count, double lo, double hi, bool lo_open,
                                               const char* unit) {
-  known_.insert(key);
+  mark(key);
   const std::string name = full(key);
   const YAML::Node v = at(key);
   if (!v.IsSequence() || static_cast<int>(v.size()) != count) {

@@ -6,57 +6,26 @@
 #include <stdexcept>
 
 #include "cable_dynamics/dynamics/frames.h"
+#include "cable_dynamics/params/input_gate.h"
 #include "cable_dynamics/params/states.h"
 #include "cable_dynamics/simulation/winch_links.h"
 
 namespace cable_dynamics {
-namespace {
-
-/// The paper's azimuth and torsion springs and dampers act on angles that are not defined when a link
-/// hangs straight down; their torque grows like 1/sin(te) there (docs/MODEL.md section 5).
-void rejectSingularPaperSprings(const CableParams& p) {
-  if (p.stiffness.model != StiffnessModel::kPaper) return;
-  const std::pair<const char*, double> values[] = {
-      {"cable.stiffness.azimuth", p.stiffness.azimuth},        {"cable.stiffness.torsion", p.stiffness.torsion},
-      {"cable.stiffness.torsional_rigidity", p.stiffness.torsional_rigidity},
-      {"cable.stiffness.bending_rigidity", p.stiffness.bending_rigidity},
-      {"cable.damping.azimuth", p.damping.azimuth},            {"cable.damping.torsion", p.damping.torsion}};
-  for (const auto& [key, value] : values) {
-    if (value != 0.0) {
-      throw std::invalid_argument(std::string(key) + " = " + std::to_string(value) +
-                                  ": expected 0 with cable.stiffness.model: paper in the simulator (the paper's "
-                                  "azimuth and torsion springs and dampers are singular at the vertical); use "
-                                  "model: bending");
-    }
-  }
-  // The paper's elevation damper acts along the azimuth's direction, which swings fast as a link passes
-  // near the vertical: the semi-implicit step, which holds directions over a long step, mis-tracks it
-  // (measured: a 10 ms step stalls the current preset away from its steady state). RK4 tracks it.
-  if (p.simulation.integrator == Integrator::kSemiImplicit && p.damping.elevation != 0.0) {
-    throw std::invalid_argument("cable.damping.elevation = " + std::to_string(p.damping.elevation) +
-                                ": expected 0 with simulation.integrator: semi_implicit unless "
-                                "cable.stiffness.model is bending (or use integrator: rk4)");
-  }
-  // The implicit integrator folds the bending model's joint springs into its recursion; the paper's
-  // elevation spring and damper act on an absolute angle and are not among its Jacobians.
-  if (p.simulation.integrator == Integrator::kImplicit && (p.stiffness.elevation != 0.0 || p.damping.elevation != 0.0)) {
-    throw std::invalid_argument("cable.stiffness.elevation / cable.damping.elevation = " +
-                                std::to_string(p.stiffness.elevation) + " / " + std::to_string(p.damping.elevation) +
-                                ": expected 0 with simulation.integrator: implicit unless cable.stiffness.model "
-                                "is bending (or use integrator: rk4)");
-  }
+void checkSimulatorInputs(const CableParams& params, const LinkProperties& properties, SimulatorUse use) {
+  checkConfigRules(params);
+  checkSimulatorRules(params);
+  if (use == SimulatorUse::kStepping) requireStableTimeStep(params, properties);  // not for the two others
 }
 
-}  // namespace
-
-CableSimulator::CableSimulator(const CableParams& params)
+CableSimulator::CableSimulator(const CableParams& params, SimulatorUse use)
     : params_(params),
+      use_(use),
       dynamics_(params),
       scheme_(makeTimeScheme(params.simulation.integrator, params.links, params.simulation.rho_infinity)),
       ends_(params.base, params.load, params.winch),
       limits_(stepLimits(*std::min_element(params.link_lengths.begin(), params.link_lengths.end()), params.gravity)),
       dt_(params.simulation.dt) {
-  rejectSingularPaperSprings(params);
+  checkSimulatorInputs(params, dynamics_.properties(), use);  // the gate: refused before anything runs
   ends_.setRestClamp(dynamics_.properties().clamp_axis, dynamics_.properties().clamp_twist);
   const int size = dynamics_.stateSize();
   x_.setZero(size);
@@ -127,6 +96,18 @@ void CableSimulator::deployConfigured() {
   const int first = params_.winch.stored_links;
   dynamics_.deploy(first);
   ends_.setOutboardLength(params_.deployedLength() - params_.link_lengths[first]);
+}
+
+void CableSimulator::commandWinchSpeed(double speed) {
+  if (!hasWinch()) throw std::invalid_argument(kNoWinchMessage);
+  checkWinchSpeed(speed, params_.winch);
+  ends_.winch().commandSpeed(speed);
+}
+
+void CableSimulator::commandWinchLength(double length) {
+  if (!hasWinch()) throw std::invalid_argument(kNoWinchMessage);
+  checkWinchLength(length, params_.winch);
+  ends_.winch().commandLength(length);
 }
 
 double CableSimulator::deployedLength() const {
@@ -218,6 +199,9 @@ bool CableSimulator::advance(double h) {
 }
 
 StepReport CableSimulator::step() {
+  if (use_ == SimulatorUse::kStaticsOnly) {
+    throw std::logic_error("step: this simulator was built for its statics only (its time step was not checked)");
+  }
   StepReport report;
   const int moving = StateLayout::moving(links(), firstLink());  // a winch's drum slots do not change in a step
   x_start_.tail(moving) = x_.tail(moving);
@@ -298,6 +282,7 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
 }
 
 void CableSimulator::setCurrent(const Eigen::Vector3d& current) {
+  checkCurrent(current);
   dynamics_.current().setUniformWorld(current);
   start_balance_known_ = false;
   scheme_->forget();
@@ -305,6 +290,9 @@ void CableSimulator::setCurrent(const Eigen::Vector3d& current) {
 
 void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                                    const Eigen::Quaterniond& attitude) {
+  checkPosition("load target position", position);
+  checkVelocity("load target velocity", velocity);
+  checkAttitude("load target attitude", attitude);
   ends_.setLoadTarget(position, velocity, attitude);
   start_balance_known_ = false;
   scheme_->forget();
@@ -312,6 +300,9 @@ void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen:
 
 void CableSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                                    const Eigen::Quaterniond& attitude) {
+  checkPosition("base target position", position);
+  checkVelocity("base target velocity", velocity);
+  checkAttitude("base target attitude", attitude);
   ends_.setBaseTarget(position, velocity, attitude);
   start_balance_known_ = false;
   drift_reference_known_ = false;

@@ -3,9 +3,20 @@
 #include <string>
 
 #include "cable_dynamics/simulation/cable_simulator.h"
-#include "cable_dynamics/simulation/stable_step.h"
+#include "cable_dynamics/simulation/tunable_keys.h"
 
 namespace cable_dynamics {
+
+const std::array<TunableKey, 5> kTunableKeys = {{
+    {"fluid.drag_normal", [](CableParams& p) -> double& { return p.fluid.drag_normal; },
+     [](SectionParams& s) -> double& { return s.drag_normal; }},
+    {"fluid.drag_tangential", [](CableParams& p) -> double& { return p.fluid.drag_tangential; },
+     [](SectionParams& s) -> double& { return s.drag_tangential; }},
+    {"fluid.added_mass", [](CableParams& p) -> double& { return p.fluid.added_mass; },
+     [](SectionParams& s) -> double& { return s.added_mass; }},
+    {"load.coupling.stiffness", [](CableParams& p) -> double& { return p.load.coupling_stiffness; }, nullptr},
+    {"load.coupling.damping", [](CableParams& p) -> double& { return p.load.coupling_damping; }, nullptr},
+}};
 
 void CableSimulator::retune(const CableParams& params) {
   if (params.links != params_.links || params.sections.size() != params_.sections.size()) {
@@ -14,22 +25,17 @@ void CableSimulator::retune(const CableParams& params) {
                                 " sections) than the running one (" + std::to_string(params_.links) + " links, " +
                                 std::to_string(params_.sections.size()) + " sections)");
   }
-  // Only the tunable keys change; everything else stays as the simulator was built.
-  CableParams next = params_;
-  next.fluid.drag_normal = params.fluid.drag_normal;
-  next.fluid.drag_tangential = params.fluid.drag_tangential;
-  next.fluid.added_mass = params.fluid.added_mass;
-  for (std::size_t i = 0; i < next.sections.size(); ++i) {
-    next.sections[i].drag_normal = params.sections[i].drag_normal;
-    next.sections[i].drag_tangential = params.sections[i].drag_tangential;
-    next.sections[i].added_mass = params.sections[i].added_mass;
+  // Only the tunable keys change (kTunableKeys); everything else stays as the simulator was built.
+  CableParams next = params_, given = params;
+  for (const TunableKey& k : kTunableKeys) {
+    k.in(next) = k.in(given);
+    if (k.in_section == nullptr) continue;
+    for (std::size_t i = 0; i < next.sections.size(); ++i) k.in_section(next.sections[i]) = k.in_section(given.sections[i]);
   }
-  next.load.coupling_stiffness = params.load.coupling_stiffness;
-  next.load.coupling_damping = params.load.coupling_damping;
 
   // Built and checked aside, so that a refusal leaves the running model as it was.
   const ChainModel model(next, dynamics_.model());
-  requireStableTimeStep(next, model.properties());  // the coupling's rate enters RK4's limit
+  checkSimulatorInputs(next, model.properties(), use_);  // the gate; the coupling's rate enters RK4's limit
   dynamics_.replaceModel(model);
   params_ = next;
   // A scheme that kept an evaluation of the old model (the last step's end) must evaluate afresh.

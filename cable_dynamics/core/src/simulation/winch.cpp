@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cable_dynamics/params/input_gate.h"
+
 namespace cable_dynamics {
 namespace {
 
@@ -25,13 +27,15 @@ void Winch::restart(double length) {
 }
 
 void Winch::commandSpeed(double speed) {
+  checkWinchSpeed(speed, params_);  // refused, never clamped
   to_length_ = false;
-  speed_command_ = std::clamp(speed, -params_.max_speed, params_.max_speed);
+  speed_command_ = speed;
 }
 
 void Winch::commandLength(double length) {
+  checkWinchLength(length, params_);
   to_length_ = true;
-  length_command_ = std::clamp(length, params_.min_length, params_.max_length);
+  length_command_ = length;
 }
 
 void Winch::followSchedule(double t) {

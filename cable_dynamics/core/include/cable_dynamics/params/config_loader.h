@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// \brief Reads CableParams from a YAML config (the keys of README.md, section "Configuration"), validating
+/// \brief Reads CableParams from a YAML config (the keys of docs/CONFIG.md), validating
 ///        every value.
 
 #include <stdexcept>

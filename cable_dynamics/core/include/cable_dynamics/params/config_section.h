@@ -26,6 +26,24 @@ class ConfigError : public std::invalid_argument {
 /// A node's value as it reads in a message: flow YAML, or "(missing)".
 std::string describeNode(const YAML::Node& node);
 
+/// A hook for tests: while one exists (on this thread), every key a ConfigSection is asked for is
+/// recorded by its dotted path (list entries with their index, e.g. `cable.sections[0].length`).
+/// test/test_config_keys.cpp lists the loader's keys with it against docs/CONFIG.md.
+class ConfigKeyLog {
+ public:
+  ConfigKeyLog();
+  ~ConfigKeyLog();
+  ConfigKeyLog(const ConfigKeyLog&) = delete;
+  ConfigKeyLog& operator=(const ConfigKeyLog&) = delete;
+  /// The keys asked for, less those opened as sub-sections (mappings of further keys).
+  std::set<std::string> keys() const;
+
+ private:
+  friend class ConfigSection;
+  ConfigKeyLog* previous_;
+  std::set<std::string> asked_, sections_;
+};
+
 /// One section (mapping) of a YAML tree: typed reads with range checks, and a check that no other keys
 /// are present. A number must be a plain scalar: a quoted string such as '25' is refused where a number
 /// is expected, as is a fraction where an integer is.
@@ -66,6 +84,8 @@ class ConfigSection {
  private:
   YAML::Node at(const std::string& key) const;
   std::string full(const std::string& key) const;
+  /// Marks `key` known (and records it in an active ConfigKeyLog; `section`: opened by sub()).
+  void mark(const std::string& key, bool section = false);
 
   YAML::Node node_;
   std::string path_;

@@ -57,6 +57,22 @@ struct StepReport {
   std::string message;  ///< why the step failed (time and state), empty when ok
 };
 
+/// What a simulator is built for, and so which checks its constructor runs.
+enum class SimulatorUse {
+  kStepping,     ///< the default, for every entry point: every check of checkSimulatorInputs()
+  kStaticsOnly,  ///< cable_sim --statics: the time step is not judged, and step() throws
+  /// Tests of the divergence handling (detection, substeps, recovery), which drive RK4 beyond its
+  /// stability limit on purpose: the time step is not judged. No entry point (cable_sim, the node, the
+  /// nodelet, Python) builds one.
+  kUnjudgedStep,
+};
+
+/// The gate every entry point passes (cable_sim, the node, the nodelet, live tuning, Python): the rules
+/// between keys and the paper model's singular springs (params/input_gate.h), and, for stepping, RK4's
+/// stable step (stable_step.h). Throws ConfigError naming the key, the value and the allowed range.
+void checkSimulatorInputs(const CableParams& params, const LinkProperties& properties,
+                          SimulatorUse use = SimulatorUse::kStepping);
+
 /// Steps the chain with a fixed dt and the configured time scheme. A step whose state is not finite,
 /// whose mass matrix fails, whose angular velocity exceeds a limit or (RK4) whose energy balance grows by
 /// more than the tolerance is discarded and retried as 2, 4, ..., kMaxSubsteps substeps; if that fails
@@ -66,10 +82,10 @@ class CableSimulator {
   /// The most pieces a step is split into before it counts as diverged.
   static constexpr int kMaxSubsteps = 64;
 
-  /// Throws std::invalid_argument when the paper stiffness model has azimuth or torsion springs or
-  /// dampers (singular at the vertical: use the bending model), naming the key, and when
-  /// `initial.mode: equilibrium` finds no equilibrium (the message says why).
-  explicit CableSimulator(const CableParams& params);
+  /// Throws ConfigError (a std::invalid_argument) when checkSimulatorInputs() refuses `params` (a
+  /// dt beyond RK4's reach, the paper model's azimuth or torsion springs, a broken rule between keys),
+  /// and std::runtime_error when `initial.mode: equilibrium` finds no equilibrium (the message says why).
+  explicit CableSimulator(const CableParams& params, SimulatorUse use = SimulatorUse::kStepping);
 
   /// Back to the configured initial state and inputs at t = 0. With `initial.mode: equilibrium`, throws
   /// std::runtime_error when the statics find no equilibrium (the state is then the angles').
@@ -93,7 +109,8 @@ class CableSimulator {
   /// time, the deployment, the inputs and the energy bookkeeping carry on (none of these coefficients
   /// stores energy: drag and added mass only dissipate, the coupling's work is a work input). Throws
   /// std::invalid_argument, changing nothing, when `params` has another number of links or sections, or
-  /// (RK4) when the new coefficients need a step below simulation.dt (ConfigError naming it and the mode).
+  /// (RK4) when the new coefficients need a step below simulation.dt (checkSimulatorInputs: ConfigError
+  /// naming it and the mode).
   void retune(const CableParams& params);
 
   /// Advances by one time step dt.
@@ -115,9 +132,11 @@ class CableSimulator {
   bool hasWinch() const { return ends_.hasWinch(); }
   const Winch& winch() const { return ends_.winch(); }
   /// Pay out (> 0) or haul in (< 0) [m/s]; replaces a target length and the schedule's last command.
-  void commandWinchSpeed(double speed) { ends_.winch().commandSpeed(speed); }
-  /// Drive to a deployed length [m] and stop there.
-  void commandWinchLength(double length) { ends_.winch().commandLength(length); }
+  /// Throws std::invalid_argument (params/input_gate.h) without a winch or beyond +-winch.max_speed.
+  void commandWinchSpeed(double speed);
+  /// Drive to a deployed length [m] and stop there. Throws std::invalid_argument without a winch or
+  /// outside [winch.min_length, winch.max_length].
+  void commandWinchLength(double length);
   /// The base link's slot (0 without a winch) and the deployed length [m].
   int firstLink() const { return dynamics_.model().firstLink(); }
   double deployedLength() const;
@@ -133,11 +152,14 @@ class CableSimulator {
   // Inputs, all in one frame: world axes (REP-103, z up) with the origin at the base's rest position,
   // the frame of the config's motion offsets and current.
 
-  /// Uniform current [m/s], replacing the configured field until reset().
+  // Each setter checks its value in the gate (params/input_gate.h) and throws std::invalid_argument,
+  // changing nothing, when it is refused.
+
+  /// Uniform current [m/s], replacing the configured field until reset(); fluid.current's range.
   void setCurrent(const Eigen::Vector3d& current);
   /// External target for the load (modes anchored/attached) [m], [m/s]: the ROV's attachment point,
   /// with the ROV's attitude (world from ROV) for the wrench on it; replaces the configured motion
-  /// until reset().
+  /// until reset(). Positions within +-kMaxInputPosition, speeds up to kMaxInputSpeed, a unit attitude.
   void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                      const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
   /// External base position and velocity [m], [m/s]: the vessel's hang-off point, with the vessel's
@@ -154,8 +176,8 @@ class CableSimulator {
   /// Steps since reset that needed substeps.
   long retriedSteps() const { return retried_steps_; }
 
-  /// Largest stable RK4 time step estimated from the stiffest mode, with a factor 2 of margin [s]
-  /// (stable_step.h).
+  /// The recommended RK4 time step: half the stability limit estimated from the stiffest mode [s]
+  /// (stable_step.h; a dt up to the limit itself is accepted).
   double estimateStableTimeStep() const { return estimateStableStep(params_, properties()).recommended; }
 
  private:
@@ -169,6 +191,7 @@ class CableSimulator {
   void finishWinchStep();
 
   CableParams params_;
+  SimulatorUse use_;
   ChainDynamics dynamics_;
   std::unique_ptr<TimeScheme> scheme_;
   EndConditions ends_;

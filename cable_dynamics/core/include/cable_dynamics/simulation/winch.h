@@ -27,9 +27,11 @@ class Winch {
   void reset(double length);
   /// `length` deployed [m], at rest, the command kept (recovery after a divergence).
   void restart(double length);
-  /// Pay out (> 0) or haul in (< 0) at `speed` [m/s], clamped to +-max_speed.
+  /// Pay out (> 0) or haul in (< 0) at `speed` [m/s]; throws std::invalid_argument (params/input_gate.h)
+  /// beyond +-max_speed or not finite, changing nothing (never clamped).
   void commandSpeed(double speed);
-  /// Drive to the deployed length `length` [m] (clamped to the limits) and stop there.
+  /// Drive to the deployed length `length` [m] and stop there; throws std::invalid_argument outside
+  /// [min_length, max_length] or not finite.
   void commandLength(double length);
   /// Applies the schedule's command for time t [s], if one starts at or before t and was not applied.
   void followSchedule(double t);

@@ -14,18 +14,14 @@
 #include <ros/time.h>
 #include <std_msgs/Float64.h>
 
+#include "cable_dynamics/params/input_gate.h"
 #include "cable_dynamics/ros/input_verdict.h"
 #include "cable_dynamics/ros/pose_tracker.h"
 
 namespace cable_dynamics {
 
-/// Largest |coordinate| of an input position, before and after the frame transform [m]: beyond it
-/// derived quantities (energies, forces) can overflow a double.
-constexpr double kMaxInputPosition = 1e6;
-/// Fastest current accepted [m/s].
-constexpr double kMaxCurrentSpeed = 100.0;
-/// A pose implying a faster ROV or base is a jump [m/s].
-constexpr double kMaxInputSpeed = 20.0;
+// The limits on input values (kMaxInputPosition, kMaxInputSpeed, kMaxCurrentSpeed) are the simulator's
+// gate's (params/input_gate.h): the guard refuses what the simulator's setters would refuse.
 /// The jump check divides by at least this interval, whatever the stamps say [s].
 constexpr double kMinJumpInterval = 0.01;
 /// Consecutive consistent refused poses after which the tracker takes the new stream.

@@ -5,12 +5,13 @@
 namespace cable_dynamics {
 
 /// Why an input was taken or refused. The checks run in this order and the first that fails decides
-/// (README.md, "The node beside an ROV simulation", lists the rules).
+/// (docs/NODE.md, "The input guard", lists the rules).
 enum class InputVerdict {
   kAccepted,     ///< used
   kReacquired,   ///< used: the tracker gave up the old stream and took a consistent new one
   kNonFinite,    ///< a NaN or an infinity in any number of the message (rejected)
-  kOutOfRange,   ///< a position beyond kMaxInputPosition, a current above kMaxCurrentSpeed, a winch speed
+  kOutOfRange,   ///< a position component beyond kMaxInputPosition, a current component above kMaxCurrentSpeed
+                 ///< (params/input_gate.h), a winch speed
                  ///< beyond winch.max_speed (rejected)
   kBadFrame,     ///< an invalid frame name, or one tf2 cannot place in the world frame (rejected)
   kStale,        ///< stamped more than input_timeout before or after the receiver's clock (stale)

@@ -111,10 +111,10 @@ void fillCableState(const OutputSource& source, const NodeStatus& status, const 
 /// `base_position` is the base's rest position in the world frame [m].
 void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
                   CableOutputs& out);
-/// /diagnostics: one status with the level rules of README.md (and the winch's values with a winch).
+/// /diagnostics: one status with the level rules of docs/NODE.md (and the winch's values with a winch).
 void fillDiagnostics(const NodeStatus& status, const ros::Time& stamp, diagnostic_msgs::DiagnosticArray& msg);
 
-/// The diagnostics level and message for a status (README.md: OK, WARN behind real time or past
+/// The diagnostics level and message for a status (docs/NODE.md: OK, WARN behind real time or past
 /// divergences, ERROR dropping time, diverging now, or most steps needing substeps).
 unsigned char diagnosticLevel(const NodeStatus& status, std::string& message);
 

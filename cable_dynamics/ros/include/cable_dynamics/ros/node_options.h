@@ -14,7 +14,7 @@
 
 namespace cable_dynamics {
 
-/// ROS-side options (private parameters under `~ros/`); ranges in README.md.
+/// ROS-side options (private parameters under `~ros/`); ranges in docs/NODE.md, "Parameters".
 struct NodeOptions {
   double rate = 100.0;                ///< simulation and publishing cycles per second [Hz]
   std::string world_frame = "world";  ///< REP-103 frame (z up) the cable lives in

@@ -5,6 +5,7 @@
 ///        refused live too, with the same message. The dynamic_reconfigure server (live_tuning.h) and the
 ///        node (cable_node.cpp) apply what passes.
 
+#include <array>
 #include <string>
 
 #include <Eigen/Core>
@@ -35,6 +36,20 @@ enum TuningLevel : unsigned {
   kTunePause = 8,
   kTuneWinch = 16,
 };
+
+/// One parameter of live tuning, in the one list of them (kTunableParameters): the dynamic_reconfigure
+/// server (live_tuning.cpp), tunableValuesOf(), tunedParams() and the node's application run over it, and
+/// test_tuning checks cfg/Tuning.cfg against it (names, types, levels, and the ranges its descriptions
+/// print against the ones the checks refuse with).
+struct TunableParameter {
+  const char* name;                 ///< the cfg's parameter name
+  unsigned level;                   ///< its TuningLevel
+  /// The key whose range it takes: a config key of kTunableKeys (simulation/tunable_keys.h) for a
+  /// coefficient, "fluid.current", "ros.rate", "winch.max_speed"; "" for the flag `paused`.
+  const char* key;
+  double& (*at)(TunableValues&);    ///< its value; nullptr for the flag `paused`
+};
+extern const std::array<TunableParameter, 11> kTunableParameters;
 
 /// The values of a freshly started node: its config's coefficients, `rate`, not paused, the winch's
 /// configured speed (0 without one). The current is fluid.current (0 with a current profile).

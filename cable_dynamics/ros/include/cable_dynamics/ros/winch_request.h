@@ -5,11 +5,11 @@
 #include <string>
 
 #include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/params/input_gate.h"
 
 namespace cable_dynamics {
 
-/// The text a winch command gets without a winch (the service's message; the topic's log says the same).
-extern const char* const kNoWinchMessage;
+// kNoWinchMessage: the text a winch command gets without a winch (params/input_gate.h, the simulator's own).
 
 /// true when `length` [m] is a target the winch can reach: a winch is configured and `length` is finite and
 /// within [min_length, max_length]. Otherwise false and `why` says so, naming the range in metres.

@@ -1,0 +1,67 @@
+#pragma once
+/// \file
+/// \brief The one gate for the simulator's inputs: the limits on live inputs (written here once), the
+///        rules between config keys, the paper model's singular springs, and the checks of the values the
+///        simulator's setters take. Each refusal throws std::invalid_argument (ConfigError for a config
+///        key) whose message names the key, the value and the allowed range. The config loader calls checkConfigRules(); the
+///        simulator's constructor, retune() and its setters call the rest (CableSimulator::checkInputs adds
+///        RK4's stable step, simulation/stable_step.h), so cable_sim, the node, the nodelet, live tuning and
+///        Python refuse the same inputs with the same message. The node's input guard
+///        (ros/input_guard.h) judges messages with the predicates below before they reach a setter.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "cable_dynamics/params/cable_params.h"
+#include "cable_dynamics/params/config_section.h"
+
+namespace cable_dynamics {
+
+// Limits on live inputs, world axes (z up) from the base's rest position.
+
+/// Largest |coordinate| of a target position (the ROV's attachment point, the vessel's hang-off point)
+/// [m]: beyond it derived quantities (energies, forces) can overflow a double.
+constexpr double kMaxInputPosition = 1e6;
+/// Fastest target: a pose stream implying a faster ROV or base is a jump [m/s].
+constexpr double kMaxInputSpeed = 20.0;
+/// Largest |component| of the current, as fluid.current in a config [m/s].
+constexpr double kMaxCurrentSpeed = 100.0;
+
+/// The text of a winch command on a cable without a winch.
+extern const char* const kNoWinchMessage;
+
+/// The rules between config keys that a parsed config obeys (one stiffness law or the other, what a
+/// winch, a clamped tip and the paper model allow). Throws ConfigError on the first broken one.
+void checkConfigRules(const CableParams& p);
+
+/// What the simulator adds: the paper's azimuth and torsion springs and dampers are singular at the
+/// vertical, and its elevation damper needs RK4 (semi-implicit) or the bending model (implicit).
+/// Throws ConfigError naming the key.
+void checkSimulatorRules(const CableParams& p);
+
+// Predicates (the node's guard judges messages with them) and the checks that throw (the setters).
+
+/// Every component finite and within +-kMaxInputPosition.
+bool positionAllowed(const Eigen::Vector3d& position);
+/// Finite, |velocity| <= kMaxInputSpeed (up to the rounding of a tracker's quotient).
+bool velocityAllowed(const Eigen::Vector3d& velocity);
+/// Every component finite and within +-kMaxCurrentSpeed.
+bool currentAllowed(const Eigen::Vector3d& current);
+/// Finite and |speed| <= max_speed.
+bool winchSpeedAllowed(double speed, double max_speed);
+
+/// `key` = position [m] (`key` names the input, e.g. "load target position").
+void checkPosition(const char* key, const Eigen::Vector3d& position);
+/// `key` = velocity [m/s].
+void checkVelocity(const char* key, const Eigen::Vector3d& velocity);
+/// A finite quaternion of unit length (within 1e-6).
+void checkAttitude(const char* key, const Eigen::Quaterniond& attitude);
+/// A uniform current in world axes [m/s]: fluid.current's range, each component named as the loader
+/// names it (fluid.current[i]).
+void checkCurrent(const Eigen::Vector3d& current);
+/// A winch speed command [m/s] within +-winch.max_speed.
+void checkWinchSpeed(double speed, const WinchParams& winch);
+/// A winch length target [m] within [winch.min_length, winch.max_length].
+void checkWinchLength(double length, const WinchParams& winch);
+
+}  // namespace cable_dynamics
