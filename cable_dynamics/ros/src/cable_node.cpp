@@ -10,6 +10,7 @@
 
 #include "cable_dynamics/dynamics/paper_model.h"
 #include "cable_dynamics/ros/cycle_stepper.h"
+#include "cable_dynamics/ros/coupling_port_message.h"
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/input_log.h"
 #include "cable_dynamics/ros/reset_request.h"
@@ -90,6 +91,10 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   wrench_world_pub_.advertise(nh_, "rov_wrench_world", 10);
   base_wrench_pub_.advertise(nh_, "base_wrench", 10);
   base_wrench_world_pub_.advertise(nh_, "base_wrench_world", 10);
+  if (params_.load.mode == LoadMode::kAttached) {
+    port_pub_.advertise(nh_, "rov_coupling", 10);
+    port_msg_.header.frame_id = options_.world_frame;
+  }
   if (params_.seabed.enabled) {
     // The bottom once, latched (a late rviz still gets it); the links on it with every output.
     seabed_pub_ = nh_.advertise<visualization_msgs::Marker>("seabed_marker", 1, true);
@@ -211,7 +216,11 @@ void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
       guard_->pose(InputGuard::kRovPose, *msg, ros::Time::now(), resolver_, position, velocity, attitude);
   logInput("rov_pose", verdict, guard_->counters(), options_);
   if (!isAccepted(verdict)) return;
-  sim_->setLoadTarget(position - options_.base_position, velocity, attitude);  // the attachment point
+  // The attachment point at the simulated instant its stamp stands for: between poses the simulator
+  // carries it on with the pose stream's velocity (a first-order hold; docs/ROV_COUPLING.md).
+  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  const double at = clock_.anchored() ? clock_.dueSimTime(stamp) : sim_->time();
+  sim_->setLoadTarget(position - options_.base_position, velocity, attitude, at);
   if (params_.load.mode == LoadMode::kFree) {
     ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is free: the pose is ignored (use attached)");
   }
@@ -354,8 +363,10 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   fillMarkers(source_, params_.totalLength(), scale, stamp, outputs_.markers);
   fillCableState(source_, status_, stamp, outputs_.state);
   fillWrenches(source_, options_.base_position, stamp, outputs_);
+  const bool attached = params_.load.mode == LoadMode::kAttached;
+  if (attached) fillCouplingPort(source_.snapshot.port, options_.base_position, stamp, port_msg_);
   // Never a non-finite number out, even one derived from a finite state (an overflowing arrow).
-  if (!allFinite(outputs_)) {
+  if (!allFinite(outputs_) || (attached && !allFinite(port_msg_))) {
     recoverFromDivergence("non-finite output at t = " + std::to_string(sim_->time()) + " s (nothing published)");
     return;
   }
@@ -372,6 +383,7 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   wrench_world_pub_.publish(outputs_.wrench_world);
   base_wrench_pub_.publish(outputs_.base_wrench);
   base_wrench_world_pub_.publish(outputs_.base_wrench_world);
+  if (attached) port_pub_.publish(port_msg_);
   last_stamp_ = stamp;
 }
 

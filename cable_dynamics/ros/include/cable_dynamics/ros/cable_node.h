@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include <cable_msgs/CouplingPort.h>
 #include <cable_msgs/GetModel.h>
 #include <cable_msgs/Reset.h>
 #include <cable_msgs/ResetToEquilibrium.h>
@@ -88,6 +89,9 @@ class CableNode {
   SharedPublisher<cable_msgs::CableState> state_pub_;
   SharedPublisher<visualization_msgs::MarkerArray> marker_pub_;
   SharedPublisher<geometry_msgs::WrenchStamped> wrench_pub_, wrench_world_pub_, base_wrench_pub_, base_wrench_world_pub_;
+  /// rov_coupling (attached loads only): the ROV's port with its stiffness and damping.
+  SharedPublisher<cable_msgs::CouplingPort> port_pub_;
+  cable_msgs::CouplingPort port_msg_;
   ros::Publisher diagnostics_pub_;
   ros::Publisher seabed_pub_, contact_pub_;  ///< with a seabed: the bottom (latched), the links on it
   visualization_msgs::Marker contact_marker_;
