@@ -115,6 +115,12 @@ class RovBody:
         self.integral = np.zeros(3)
         self.work = 0.0  # [J] done on the ROV by the cable's wrench (force . velocity of the origin + torque . w)
 
+    def preload(self, force_world):
+        """Sets the station keeper's integral so that its thrust balances `force_world` [N] (the cable's pull
+        at start): a bumpless start at a loaded equilibrium."""
+        if self.ki > 0.0:
+            self.integral = np.asarray(force_world, dtype=float) / self.ki
+
     def velocity_world(self):
         return quat_to_matrix(self.q) @ self.v
 

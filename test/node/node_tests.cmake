@@ -31,6 +31,10 @@ target_include_directories(test_hostile_inputs PRIVATE ${EIGEN3_INCLUDE_DIR} ${c
 target_link_libraries(test_hostile_inputs ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 add_dependencies(test_hostile_inputs cable_msgs_generate_messages_cpp cable_dynamics_node)
 
+# Issue 26: the coupling sized for the pose exchange, no roscore.
+catkin_add_gtest(test_coupling_sizer test/node/test_coupling_sizer.cpp)
+target_link_libraries(test_coupling_sizer cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})
+
 # The node's ROS-light parts (guard, tracker, clock, builders' checks, options), no roscore.
 catkin_add_gtest(test_node_parts test/node/test_node_parts.cpp)
 target_link_libraries(test_node_parts cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})

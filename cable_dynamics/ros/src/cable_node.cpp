@@ -11,6 +11,7 @@
 #include "cable_dynamics/dynamics/paper_model.h"
 #include "cable_dynamics/ros/cycle_stepper.h"
 #include "cable_dynamics/ros/coupling_port_message.h"
+#include "cable_dynamics/ros/coupling_sizer.h"
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/input_log.h"
 #include "cable_dynamics/ros/reset_request.h"
@@ -41,6 +42,13 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   requireStableTimeStep(params_, sim_->properties());  // a dt beyond RK4's reach: refused at start, naming it
   joints_ = std::make_unique<ElasticJoints>(sim_->properties());
   joints_first_ = sim_->firstLink();
+  if (params_.load.mode == LoadMode::kAttached && options_.min_rov_mass > 0.0) {
+    // The ROV feels the coupling one exchange late: sized for the lightest ROV at the exchange's delay,
+    // first for an exchange at this node's own rate, then as the pose stream's stamps measure it.
+    sizer_ = std::make_unique<CouplingSizer>(params_.load.coupling_stiffness, params_.load.coupling_damping,
+                                             options_.min_rov_mass, 1.0 / options_.rate);
+    applyCouplingSize();
+  }
   names_.prefix = options_.frame_prefix;
   clock_ = SimClock(options_.max_lag);
 
@@ -150,7 +158,13 @@ TunableValues CableNode::applyTuning(const TunableValues& wanted, unsigned level
     try {
       YAML::Node tree;
       const CableParams tuned = tunedParams(config_tree_, wanted, tree);  // ConfigError: key, value, range
-      sim_->retune(tuned);  // RK4's stable step too; rebuilds the chain's constants between two cycles
+      CableParams running = tuned;  // the coupling as the exchange allows it (CouplingSizer)
+      if (sizer_) {
+        sizer_->setConfigured(tuned.load.coupling_stiffness, tuned.load.coupling_damping);
+        running.load.coupling_stiffness = sizer_->stiffness();
+        running.load.coupling_damping = sizer_->damping();
+      }
+      sim_->retune(running);  // RK4's stable step too; rebuilds the chain's constants between two cycles
       params_ = tuned;
       config_tree_ = tree;
       tuned_.drag_normal = wanted.drag_normal;
@@ -216,6 +230,9 @@ void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
       guard_->pose(InputGuard::kRovPose, *msg, ros::Time::now(), resolver_, position, velocity, attitude);
   logInput("rov_pose", verdict, guard_->counters(), options_);
   if (!isAccepted(verdict)) return;
+  if (sizer_ && sizer_->observe(msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp)) {
+    applyCouplingSize();
+  }
   // The attachment point at the simulated instant its stamp stands for: between poses the simulator
   // carries it on with the pose stream's velocity (a first-order hold; docs/ROV_COUPLING.md).
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
@@ -224,6 +241,17 @@ void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   if (params_.load.mode == LoadMode::kFree) {
     ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is free: the pose is ignored (use attached)");
   }
+}
+
+void CableNode::applyCouplingSize() {
+  CableParams running = params_;
+  running.load.coupling_stiffness = sizer_->stiffness();
+  running.load.coupling_damping = sizer_->damping();
+  sim_->retune(running);  // between cycles: rebuilds the chain's constants aside (allocates; not in a step)
+  ROS_INFO_STREAM("cable_dynamics: coupling sized for a " << options_.min_rov_mass << " kg ROV (ros.min_rov_mass) "
+                  << "exchanging poses every " << sizer_->exchangePeriod() << " s with this node's " << 1.0 / options_.rate
+                  << " s cycles: " << sizer_->stiffness() << " N/m, " << sizer_->damping() << " N s/m (configured "
+                  << params_.load.coupling_stiffness << " N/m, " << params_.load.coupling_damping << " N s/m)");
 }
 
 void CableNode::onBasePose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
@@ -394,6 +422,7 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
     return true;
   }
   try {
+    if (sizer_) sizer_->forgetStream();  // the exchange is measured afresh (the size in force stays)
     if (req.positions.empty()) {
       sim_->reset();
     } else {

@@ -21,6 +21,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "cable_dynamics/dynamics/elastic_joints.h"
+#include "cable_dynamics/ros/coupling_sizer.h"
 #include "cable_dynamics/ros/input_guard.h"
 #include "cable_dynamics/ros/live_tuning.h"
 #include "cable_dynamics/ros/message_builders.h"
@@ -68,6 +69,8 @@ class CableNode {
   bool currentTopicActive() const;
   /// After the simulator's time was set back to 0 (reset service).
   void restartClock();
+  /// Retunes the simulator with the coupling the sizer holds (the configured one, or softer) and logs it.
+  void applyCouplingSize();
   /// Counts a divergence and recovers the simulator (initial shape; time and inputs carry on).
   void recoverFromDivergence(const std::string& why);
 
@@ -92,6 +95,8 @@ class CableNode {
   /// rov_coupling (attached loads only): the ROV's port with its stiffness and damping.
   SharedPublisher<cable_msgs::CouplingPort> port_pub_;
   cable_msgs::CouplingPort port_msg_;
+  /// An attached load's coupling sized for the pose exchange (null when not attached or ros.min_rov_mass 0).
+  std::unique_ptr<CouplingSizer> sizer_;
   ros::Publisher diagnostics_pub_;
   ros::Publisher seabed_pub_, contact_pub_;  ///< with a seabed: the bottom (latched), the links on it
   visualization_msgs::Marker contact_marker_;
