@@ -1,6 +1,7 @@
 // Issue 26: the coupling sized for the pose exchange (CouplingSizer): the closed-form bounds k = 0.25 m / tau^2
 // and c = 0.5 m / tau at the delay tau = exchange period + the node's period, capped by the configured
-// coupling; the exchange period measured from stamps, robust to jitter and stalls; no chasing of jitter.
+// coupling; the exchange period measured from stamps (the 90 % quantile: the slow exchanges), robust to
+// stalls; no chasing of jitter.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -33,10 +34,10 @@ TEST(CouplingSizer, FollowsTheMeasuredExchangeAndNeverExceedsTheConfiguredCoupli
   CouplingSizer sizer(20000.0, 2000.0, 5.0, 0.01);
   ros::Time t(100.0);
   EXPECT_TRUE(feed(sizer, t, 0.05, 20, 0.004));  // 20 Hz with +-4 ms jitter: tau = 0.06 s
-  EXPECT_NEAR(sizer.exchangePeriod(), 0.05, 0.0041);
+  EXPECT_NEAR(sizer.exchangePeriod(), 0.054, 1e-9);  // the slow intervals' 90 % quantile
   EXPECT_NEAR(sizer.stiffness(), 0.25 * 5.0 / std::pow(sizer.delay(), 2), 1e-9);
   EXPECT_NEAR(sizer.damping(), 0.5 * 5.0 / sizer.delay(), 1e-9);
-  // Jitter alone does not resize (the hysteresis is 25 % of the delay).
+  // Jitter alone does not resize (the hysteresis is +25 % / -50 % of the delay).
   EXPECT_FALSE(feed(sizer, t, 0.05, 50, 0.006));
   // 1 kHz: the bound exceeds the configured coupling, which caps it.
   CouplingSizer stiff(2000.0, 50.0, 5.0, 0.001);
@@ -56,7 +57,7 @@ TEST(CouplingSizer, IgnoresStallsAndReversedStamps) {
   t -= ros::Duration(0.5);  // a stamp from the past
   sizer.observe(t);
   feed(sizer, t, 0.01, 3);
-  EXPECT_NEAR(sizer.exchangePeriod(), 0.01, 1e-9);
+  EXPECT_NEAR(sizer.exchangePeriod(), 0.01, 1e-6);
   EXPECT_EQ(sizer.stiffness(), k);
 }
 

@@ -37,11 +37,12 @@ bool CouplingSizer::observe(const ros::Time& stamp) {
     }
   }
   last_stamp_ = stamp;
-  if (count_ < 5) return false;
+  if (count_ < 10) return false;
   std::array<double, kIntervals> sorted = intervals_;
   const int used = std::min(count_, kIntervals);
-  std::nth_element(sorted.begin(), sorted.begin() + used / 2, sorted.begin() + used);
-  exchange_period_ = sorted[used / 2];
+  const int at = static_cast<int>(kQuantile * (used - 1));
+  std::nth_element(sorted.begin(), sorted.begin() + at, sorted.begin() + used);
+  exchange_period_ = sorted[at];
   return resize();
 }
 
@@ -51,7 +52,8 @@ void CouplingSizer::forgetStream() {
 }
 
 bool CouplingSizer::resize() {
-  if (std::abs(delay() - sized_delay_) <= kHysteresis * sized_delay_) return false;
+  const double change = delay() / sized_delay_ - 1.0;
+  if (change <= kSoften && change >= -kStiffen) return false;
   double k = 0.0, c = 0.0;
   sizeFor(delay(), k, c);
   sized_delay_ = delay();

@@ -19,11 +19,16 @@ class CouplingSizer {
   /// diverged at k = 20 kN/m (k tau^2 / m = 1.6) and held at 5 kN/m (0.4).
   static constexpr double kSpring = 0.25;
   static constexpr double kDamper = 0.5;
-  /// A new size is applied only when the measured delay differs from the one the size in force was made
-  /// for by more than this share: each new size changes the spring's force at the offset it holds (40 N
-  /// at 1.3 cm, k 3 kN/m) in one step, and a size chasing the stamps' jitter kicked the tip's mode on the
-  /// coupling over and over (the force swung 30-52 N about its 40.7 N at 10 % hysteresis on the size).
-  static constexpr double kHysteresis = 0.25;
+  /// A new size is applied only when the measured delay exceeds the one the size in force was made for by
+  /// more than kSoften (a softer coupling), or falls below it by more than kStiffen: each new size changes
+  /// the spring's force at the offset it holds (40 N at 1.3 cm, k 3 kN/m) in one step, and a size chasing
+  /// the stamps' jitter kicked the tip's mode on the coupling over and over (the force swung 30-52 N about
+  /// its 40.7 N at 10 % hysteresis on the size).
+  static constexpr double kSoften = 0.25;
+  static constexpr double kStiffen = 0.5;
+  /// The exchange period is this quantile of the last kIntervals stamp intervals: the slow exchanges, not
+  /// the typical one, are what the coupling must survive (a loaded machine's client runs late in bursts).
+  static constexpr double kQuantile = 0.9;
 
   /// `stiffness` [N/m] and `damping` [N s/m]: the configured coupling, never exceeded; `min_mass` [kg]: the
   /// lightest ROV to hold (ros.min_rov_mass); `cycle_period` [s]: the node's own period (1 / ros.rate),
@@ -39,7 +44,7 @@ class CouplingSizer {
 
   double stiffness() const { return stiffness_; }     ///< in force [N/m]
   double damping() const { return damping_; }         ///< in force [N s/m]
-  double exchangePeriod() const { return exchange_period_; }  ///< measured (median of the last intervals) [s]
+  double exchangePeriod() const { return exchange_period_; }  ///< measured (kQuantile of the last intervals) [s]
   double delay() const { return exchange_period_ + cycle_period_; }  ///< the loop's delay tau [s]
 
  private:
@@ -52,7 +57,7 @@ class CouplingSizer {
   double exchange_period_;
   double sized_delay_;  ///< the delay the size in force was made for [s]
   double stiffness_ = 0.0, damping_ = 0.0;
-  static constexpr int kIntervals = 15;  ///< the median of this many stamp intervals
+  static constexpr int kIntervals = 31;  ///< the quantile of this many stamp intervals
   std::array<double, kIntervals> intervals_{};
   int count_ = 0;
   ros::Time last_stamp_;
