@@ -19,7 +19,7 @@ simulator that only reads poses and wrenches would.
 Parameters (private): ~rate [Hz] (pose exchange, default 50), ~preset (bluerov2 | workclass, default
 bluerov2), ~mass [kg] (overrides the preset's, scaling its other terms), ~initial_position [x, y, z] world
 [m] (default: the cable's load frame from TF), ~target [x, y, z] (default: the initial position),
-~world_frame (default world), ~load_frame (default <ns>/load).
+~world_frame (default world), ~load_frame (default <ns>/cable_load, the cable node's load frame).
 Topics: rov_wrench (in, geometry_msgs/WrenchStamped, body axes about the ROV's origin), rov_target (in,
 geometry_msgs/PoseStamped, world frame: the station keeper's target position, e.g. scripts/fake_rov.py's
 path), rov_pose (out, geometry_msgs/PoseStamped, world frame), rov_odom (out, nav_msgs/Odometry)."""
@@ -175,14 +175,15 @@ def main():
         preset = scaled(BLUEROV2, float(rospy.get_param("~mass")))
     world = rospy.get_param("~world_frame", "world")
     ns = rospy.get_namespace().strip("/")
-    load_frame = rospy.get_param("~load_frame", (ns + "/" if ns else "") + "load")
+    load_frame = rospy.get_param("~load_frame", (ns + "/" if ns else "") + "cable_load")
     if rospy.has_param("~initial_position"):
         start = [float(x) for x in rospy.get_param("~initial_position")]
     else:
         buffer = tf2_ros.Buffer()
-        tf2_ros.TransformListener(buffer)
+        listener = tf2_ros.TransformListener(buffer)  # kept: it fills the buffer while it lives
         t = buffer.lookup_transform(world, load_frame, rospy.Time(0), rospy.Duration(30.0)).transform.translation
         start = [t.x, t.y, t.z]
+        del listener
     target = [float(x) for x in rospy.get_param("~target", start)]
     body = RovBody(preset, start, target)
     wrench = {"f": np.zeros(3), "t": np.zeros(3)}
