@@ -37,7 +37,7 @@ DEB_PACKAGES=(
   libdiagnostic-msgs-dev python3-std-msgs python3-geometry-msgs python3-sensor-msgs
   python3-sympy python3-numpy python3-scipy python3-pytest python3-yaml python3-matplotlib libmujoco-dev
   libtf2-eigen-dev libtinyxml-dev rviz xvfb imagemagick python3-tf2-ros python3-diagnostic-msgs
-  python3-visualization-msgs python3-rosgraph-msgs python3-rosmsg python3-roslaunch python3-rosunit python3-roslib
+  python3-visualization-msgs python3-nav-msgs python3-rosgraph-msgs python3-rosmsg python3-roslaunch python3-rosunit python3-roslib
   python3-rosgraph pybind11-dev python3-pybind11 python3-interactive-markers
   # A ROS user's everyday commands: rosrun, roscd, rosed (rosbash; ros-core only recommends it, and the
   # install below takes no recommends), rospack, rostopic, rosservice, rosparam, rosnode, rosmsg,

@@ -3,7 +3,8 @@
 hanging tip and then circles, and a slowly varying current (geometry_msgs/TwistStamped on current), both
 in the world frame. For launch/demo.launch; parameters ~world_frame (default: the cable node's ros.world_frame in
 the same namespace, else "world"), ~depth (m, the tip's rest depth),
-~radius (m), ~period (s), ~rate (Hz)."""
+~radius (m), ~period (s), ~rate (Hz), ~pose_topic (default rov_pose; rov_target when an ROV simulator,
+scripts/simple_rov.py, follows the path with its station keeper)."""
 import math
 
 import rospy
@@ -17,7 +18,7 @@ def main():
     radius = float(rospy.get_param("~radius", 8.0))
     period = float(rospy.get_param("~period", 120.0))
     rate = rospy.Rate(float(rospy.get_param("~rate", 20.0)))
-    pose_pub = rospy.Publisher("rov_pose", PoseStamped, queue_size=10)
+    pose_pub = rospy.Publisher(rospy.get_param("~pose_topic", "rov_pose"), PoseStamped, queue_size=10)
     current_pub = rospy.Publisher("current", TwistStamped, queue_size=10)
     start = rospy.Time.now()
     while not rospy.is_shutdown():

@@ -15,8 +15,10 @@ add_rostest(test/seabed.test DEPENDENCIES cable_dynamics_node)
 # rostest finds the Python test nodes of this package in the devel space through these links.
 # The rviz scene: the cable's cylinders, the bodies' shapes, the interactive marker driving the ROV.
 add_rostest(test/scene.test DEPENDENCIES cable_dynamics_node)
+# Issue 26: a light ROV exchanging poses and wrenches with the node, against a lockstep run.
+add_rostest(test/rov_client.test DEPENDENCIES cable_dynamics_node)
 foreach(script test_bad_config.py test_sim_time.py test_log_flood.py test_launch_file.py test_catch_up.py
-    test_scene.py test_seabed_node.py)
+    test_scene.py test_seabed_node.py test_rov_client.py)
   execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
 endforeach()
@@ -28,6 +30,10 @@ add_rostest_gtest(test_hostile_inputs test/hostile_inputs.test test/node/test_ho
 target_include_directories(test_hostile_inputs PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
 target_link_libraries(test_hostile_inputs ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 add_dependencies(test_hostile_inputs cable_msgs_generate_messages_cpp cable_dynamics_node)
+
+# Issue 26: the coupling sized for the pose exchange, no roscore.
+catkin_add_gtest(test_coupling_sizer test/node/test_coupling_sizer.cpp)
+target_link_libraries(test_coupling_sizer cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})
 
 # The node's ROS-light parts (guard, tracker, clock, builders' checks, options), no roscore.
 catkin_add_gtest(test_node_parts test/node/test_node_parts.cpp)

@@ -10,6 +10,8 @@
 
 #include "cable_dynamics/dynamics/paper_model.h"
 #include "cable_dynamics/ros/cycle_stepper.h"
+#include "cable_dynamics/ros/coupling_port_message.h"
+#include "cable_dynamics/ros/coupling_sizer.h"
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/input_log.h"
 #include "cable_dynamics/ros/reset_request.h"
@@ -39,6 +41,13 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   // The gate (checkSimulatorInputs) refuses a dt beyond RK4's reach and the combinations the simulator
   // cannot run, throwing ConfigError naming the key, as cable_sim and Python do.
   sim_ = std::make_unique<CableSimulator>(params_);
+  if (params_.load.mode == LoadMode::kAttached && options_.min_rov_mass > 0.0) {
+    // The ROV feels the coupling one exchange late: sized for the lightest ROV at the exchange's delay,
+    // first for an exchange at this node's own rate, then as the pose stream's stamps measure it.
+    sizer_ = std::make_unique<CouplingSizer>(params_.load.coupling_stiffness, params_.load.coupling_damping,
+                                             options_.min_rov_mass, 1.0 / options_.rate);
+    applyCouplingSize();
+  }
   names_.prefix = options_.frame_prefix;
   clock_ = SimClock(options_.max_lag);
 
@@ -89,6 +98,10 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   wrench_world_pub_.advertise(nh_, "rov_wrench_world", 10);
   base_wrench_pub_.advertise(nh_, "base_wrench", 10);
   base_wrench_world_pub_.advertise(nh_, "base_wrench_world", 10);
+  if (params_.load.mode == LoadMode::kAttached) {
+    port_pub_.advertise(nh_, "rov_coupling", 10);
+    port_msg_.header.frame_id = options_.world_frame;
+  }
   if (params_.seabed.enabled) {
     // The bottom once, latched (a late rviz still gets it); the links on it with every output.
     seabed_pub_ = nh_.advertise<visualization_msgs::Marker>("seabed_marker", 1, true);
@@ -144,7 +157,13 @@ TunableValues CableNode::applyTuning(const TunableValues& wanted, unsigned level
     try {
       YAML::Node tree;
       const CableParams tuned = tunedParams(config_tree_, wanted, tree);  // ConfigError: key, value, range
-      sim_->retune(tuned);  // RK4's stable step too; rebuilds the chain's constants between two cycles
+      CableParams running = tuned;  // the coupling as the exchange allows it (CouplingSizer)
+      if (sizer_) {
+        sizer_->setConfigured(tuned.load.coupling_stiffness, tuned.load.coupling_damping);
+        running.load.coupling_stiffness = sizer_->stiffness();
+        running.load.coupling_damping = sizer_->damping();
+      }
+      sim_->retune(running);  // RK4's stable step too; rebuilds the chain's constants between two cycles
       params_ = tuned;
       config_tree_ = tree;
       TunableValues given = wanted;
@@ -210,10 +229,28 @@ void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
       guard_->pose(InputGuard::kRovPose, *msg, ros::Time::now(), resolver_, position, velocity, attitude);
   logInput("rov_pose", verdict, guard_->counters(), options_);
   if (!isAccepted(verdict)) return;
-  sim_->setLoadTarget(position - options_.base_position, velocity, attitude);  // the attachment point
+  if (sizer_ && sizer_->observe(msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp)) {
+    applyCouplingSize();
+  }
+  // The attachment point at the simulated instant its stamp stands for: between poses the simulator
+  // carries it on with the pose stream's velocity (a first-order hold; docs/ROV_COUPLING.md).
+  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  const double at = clock_.anchored() ? clock_.dueSimTime(stamp) : sim_->time();
+  sim_->setLoadTarget(position - options_.base_position, velocity, attitude, at);
   if (params_.load.mode == LoadMode::kFree) {
     ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is free: the pose is ignored (use attached)");
   }
+}
+
+void CableNode::applyCouplingSize() {
+  CableParams running = params_;
+  running.load.coupling_stiffness = sizer_->stiffness();
+  running.load.coupling_damping = sizer_->damping();
+  sim_->retune(running);  // between cycles: rebuilds the chain's constants aside (allocates; not in a step)
+  ROS_INFO_STREAM("cable_dynamics: coupling sized for a " << options_.min_rov_mass << " kg ROV (ros.min_rov_mass) "
+                  << "exchanging poses every " << sizer_->exchangePeriod() << " s with this node's " << 1.0 / options_.rate
+                  << " s cycles: " << sizer_->stiffness() << " N/m, " << sizer_->damping() << " N s/m (configured "
+                  << params_.load.coupling_stiffness << " N/m, " << params_.load.coupling_damping << " N s/m)");
 }
 
 void CableNode::onBasePose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
@@ -347,8 +384,10 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   fillMarkers(source_, params_.totalLength(), scale, stamp, outputs_.markers);
   fillCableState(source_, status_, stamp, outputs_.state);
   fillWrenches(source_, options_.base_position, stamp, outputs_);
+  const bool attached = params_.load.mode == LoadMode::kAttached;
+  if (attached) fillCouplingPort(source_.snapshot.port, options_.base_position, stamp, port_msg_);
   // Never a non-finite number out, even one derived from a finite state (an overflowing arrow).
-  if (!allFinite(outputs_)) {
+  if (!allFinite(outputs_) || (attached && !allFinite(port_msg_))) {
     recoverFromDivergence("non-finite output at t = " + std::to_string(sim_->time()) + " s (nothing published)");
     return;
   }
@@ -365,6 +404,7 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   wrench_world_pub_.publish(outputs_.wrench_world);
   base_wrench_pub_.publish(outputs_.base_wrench);
   base_wrench_world_pub_.publish(outputs_.base_wrench_world);
+  if (attached) port_pub_.publish(port_msg_);
   last_stamp_ = stamp;
 }
 
@@ -375,6 +415,7 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
     return true;
   }
   try {
+    if (sizer_) sizer_->forgetStream();  // the exchange is measured afresh (the size in force stays)
     if (req.positions.empty()) {
       sim_->reset();
     } else {

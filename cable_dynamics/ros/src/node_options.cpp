@@ -29,6 +29,7 @@ NodeOptions parseNodeOptions(const YAML::Node& ros_section, const std::string& d
   o.max_lag = ros.number("max_lag", o.max_lag, 0.01, 3600.0, false, "s");
   o.tension_scale = ros.number("tension_scale", o.tension_scale, 0.0, 1e9, false, "N");
   o.diagnostics_period = ros.number("diagnostics_period", o.diagnostics_period, 0.01, 3600.0, false, "s");
+  o.min_rov_mass = ros.number("min_rov_mass", o.min_rov_mass, 0.0, 1e6, false, "kg");
   // The rviz shapes of the two bodies (scene_markers.h): drawing only.
   for (auto [key, size] : {std::pair<const char*, Eigen::Vector3d*>{"vessel_size", &o.shapes.vessel_size},
                            std::pair<const char*, Eigen::Vector3d*>{"rov_size", &o.shapes.rov_size}}) {

@@ -279,6 +279,22 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   const Eigen::Vector3d tip_clamp = -paperToWorld(dynamics_.data().tip_clamp_torque);
   out.rov.moment_world += tip_clamp;
   out.rov.moment_body += out.rov_attitude.conjugate() * tip_clamp;
+  couplingPort(ends, out);
+}
+
+void CableSimulator::couplingPort(const EndInputs& ends, SimulationSnapshot& out) const {
+  CouplingPort& port = out.port;
+  port = CouplingPort();
+  if (params_.load.mode != LoadMode::kAttached) return;
+  // The coupling force on the ROV is k (tip - point) + c (tip velocity - point velocity) at the present
+  // tip state: its derivatives in the point's position and velocity are -k and -c on the diagonal.
+  const LoadConstants& load = dynamics_.model().load();
+  port.point = paperToWorld(ends.target_position);
+  port.velocity = paperToWorld(ends.target_velocity);
+  port.force = paperToWorld(Eigen::Vector3d(-out.chain.coupling_force));
+  port.moment = -paperToWorld(dynamics_.data().tip_clamp_torque);
+  port.stiffness.topLeftCorner<3, 3>() = -load.coupling_stiffness * Eigen::Matrix3d::Identity();
+  port.damping.topLeftCorner<3, 3>() = -load.coupling_damping * Eigen::Matrix3d::Identity();
 }
 
 void CableSimulator::setCurrent(const Eigen::Vector3d& current) {
@@ -289,11 +305,11 @@ void CableSimulator::setCurrent(const Eigen::Vector3d& current) {
 }
 
 void CableSimulator::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
-                                   const Eigen::Quaterniond& attitude) {
+                                   const Eigen::Quaterniond& attitude, double at) {
   checkPosition("load target position", position);
   checkVelocity("load target velocity", velocity);
   checkAttitude("load target attitude", attitude);
-  ends_.setLoadTarget(position, velocity, attitude);
+  ends_.setLoadTarget(position, velocity, attitude, std::isnan(at) ? time_ : at);
   start_balance_known_ = false;
   scheme_->forget();
 }

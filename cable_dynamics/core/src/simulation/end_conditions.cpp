@@ -1,5 +1,6 @@
 #include "cable_dynamics/simulation/end_conditions.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cable_dynamics/dynamics/frames.h"
@@ -67,8 +68,11 @@ EndInputs EndConditions::at(double t) const {
   }
   ends.load_coupled = load_.mode != LoadMode::kFree;
   if (external_load_) {
-    ends.target_position = load_position_;
-    ends.target_velocity = load_velocity_;
+    // First-order hold: the pose carried on by its velocity, within the extrapolation limit.
+    const double ahead = t - load_time_;
+    const bool moving = std::abs(ahead) <= kTargetExtrapolation;
+    ends.target_position = load_position_ + std::clamp(ahead, -kTargetExtrapolation, kTargetExtrapolation) * load_velocity_;
+    ends.target_velocity = moving ? load_velocity_ : Eigen::Vector3d::Zero();
   } else if (ends.load_coupled) {
     Eigen::Vector3d acceleration;
     motionAt(load_.motion, load_.attachment, t, ends.target_position, ends.target_velocity, acceleration);
@@ -108,8 +112,9 @@ EndInputs EndConditions::at(double t) const {
 }
 
 void EndConditions::setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
-                                  const Eigen::Quaterniond& attitude) {
+                                  const Eigen::Quaterniond& attitude, double time) {
   external_load_ = true;
+  load_time_ = time;
   load_position_ = worldToPaper(position);
   load_velocity_ = worldToPaper(velocity);
   load_attitude_ = attitude.normalized();

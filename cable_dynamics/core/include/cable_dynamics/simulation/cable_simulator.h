@@ -3,6 +3,7 @@
 /// \brief Time stepping of the cable: a time scheme, the end conditions, divergence detection and
 ///        recovery, and the outputs users read (paper angles, link ends, tension, energies). ROS-free.
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -18,6 +19,25 @@
 #include "cable_dynamics/statics/static_solver.h"
 
 namespace cable_dynamics {
+
+/// The ROV's side of an attached load's coupling, for an ROV simulator that couples implicitly
+/// (docs/ROV_COUPLING.md): the wrench the cable puts on the ROV at the attachment point and its
+/// derivatives, all in world axes (z up). Between two messages the ROV applies
+///   [F; M](x, v) = [force; moment] + stiffness [x - point; rotation] + damping [v - velocity; omega]
+/// with x, v the attachment point's position and velocity and rotation, omega the ROV's small rotation
+/// and angular velocity since. Zero unless load.mode is attached.
+struct CouplingPort {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();     ///< attachment point the wrench is taken at [m]
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< its velocity as the simulator holds it [m/s]
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();     ///< on the ROV [N]
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();    ///< on the ROV about the point [N m]
+  /// d[F; M] / d[x; rotation], rows force then moment, columns translation then rotation
+  /// [N/m, N/rad; N m/m, N m/rad]. The rotational blocks are zero: a pinned tip passes no moment, and a
+  /// clamped tip's bending moment is not linearized here yet.
+  Eigen::Matrix<double, 6, 6> stiffness = Eigen::Matrix<double, 6, 6>::Zero();
+  /// d[F; M] / d[v; omega] [N s/m, N s/rad; N m s/m, N m s/rad], same layout and the same limit.
+  Eigen::Matrix<double, 6, 6> damping = Eigen::Matrix<double, 6, 6>::Zero();
+};
 
 /// Everything published about one instant, in the paper frame (z down) unless stated.
 struct SimulationSnapshot {
@@ -48,6 +68,8 @@ struct SimulationSnapshot {
   /// The cable's force on the ROV at the attachment point (the coupling's reaction when attached; the
   /// load's force otherwise), about the ROV's origin [N], [N m].
   BodyWrench rov;
+  /// The coupling's port at the attachment point, with its stiffness and damping (attached mode).
+  CouplingPort port;
 };
 
 /// Outcome of one step.
@@ -157,11 +179,14 @@ class CableSimulator {
 
   /// Uniform current [m/s], replacing the configured field until reset(); fluid.current's range.
   void setCurrent(const Eigen::Vector3d& current);
-  /// External target for the load (modes anchored/attached) [m], [m/s]: the ROV's attachment point,
-  /// with the ROV's attitude (world from ROV) for the wrench on it; replaces the configured motion
-  /// until reset(). Positions within +-kMaxInputPosition, speeds up to kMaxInputSpeed, a unit attitude.
+  /// External target for the load (modes anchored/attached) [m], [m/s]: the ROV's attachment point at
+  /// simulated time `at` [s] (NaN: now), with the ROV's attitude (world from ROV) for the wrench on it;
+  /// replaces the configured motion until reset(). Between targets the point moves on with `velocity`
+  /// (EndConditions::setLoadTarget). Positions within +-kMaxInputPosition, speeds up to
+  /// kMaxInputSpeed, a unit attitude.
   void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
-                     const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
+                     const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity(),
+                     double at = std::numeric_limits<double>::quiet_NaN());
   /// External base position and velocity [m], [m/s]: the vessel's hang-off point, with the vessel's
   /// attitude for the wrench on it; replaces the configured motion until reset().
   void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
@@ -181,6 +206,8 @@ class CableSimulator {
   double estimateStableTimeStep() const { return estimateStableStep(params_, properties()).recommended; }
 
  private:
+  /// Fills out.port from the evaluation `out` holds at the inputs `ends`.
+  void couplingPort(const EndInputs& ends, SimulationSnapshot& out) const;
   /// One piece of a step, of length h: the scheme's advance, the projection of the axes, the judgement.
   bool advance(double h);
   /// The energy balance at the present state and time, evaluated afresh.

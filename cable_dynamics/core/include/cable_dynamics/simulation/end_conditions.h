@@ -43,10 +43,17 @@ class EndConditions {
   double outboardLength() const { return outboard_length_; }
   /// The tip's start position (paper frame) [m], which the load's configured motion is relative to.
   void setInitialTip(const Eigen::Vector3d& initial_tip) { initial_tip_ = initial_tip; }
-  /// External load target (world axes) [m], [m/s]: the attachment point of the ROV, whose attitude is
-  /// `attitude` (world from ROV); replaces the configured motion until reset().
+  /// External load target (world axes) [m], [m/s]: the attachment point of the ROV at simulated time
+  /// `time` [s], whose attitude is `attitude` (world from ROV); replaces the configured motion until
+  /// reset(). Between poses the point moves on with `velocity` (a first-order hold, at most
+  /// kTargetExtrapolation either side of `time`): a held point with a moving velocity would pull the cable
+  /// one exchange behind the ROV, which destabilises a light ROV that exchanges poses and wrenches with
+  /// this simulator (docs/ROV_COUPLING.md).
   void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
-                     const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
+                     const Eigen::Quaterniond& attitude, double time);
+  /// How far in time a pose is carried on by its velocity [s]; beyond it the point stops (a stream that
+  /// stopped must not drag the cable away).
+  static constexpr double kTargetExtrapolation = 0.25;
   /// External base position and velocity (world axes) [m], [m/s]: the hang-off point of the vessel,
   /// whose attitude is `attitude`; replaces the configured motion.
   void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
@@ -70,6 +77,7 @@ class EndConditions {
   Eigen::Vector3d load_position_ = Eigen::Vector3d::Zero(), load_velocity_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d base_position_ = Eigen::Vector3d::Zero(), base_velocity_ = Eigen::Vector3d::Zero();
   Eigen::Quaterniond load_attitude_ = Eigen::Quaterniond::Identity(), base_attitude_ = Eigen::Quaterniond::Identity();
+  double load_time_ = 0.0;  ///< simulated time of the external load target [s]
 };
 
 }  // namespace cable_dynamics

@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include <cable_msgs/CouplingPort.h>
 #include <cable_msgs/GetModel.h>
 #include <cable_msgs/Reset.h>
 #include <cable_msgs/ResetToEquilibrium.h>
@@ -19,6 +20,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "cable_dynamics/ros/coupling_sizer.h"
 #include "cable_dynamics/ros/input_guard.h"
 #include "cable_dynamics/ros/live_tuning.h"
 #include "cable_dynamics/ros/message_builders.h"
@@ -66,6 +68,8 @@ class CableNode {
   bool currentTopicActive() const;
   /// After the simulator's time was set back to 0 (reset service).
   void restartClock();
+  /// Retunes the simulator with the coupling the sizer holds (the configured one, or softer) and logs it.
+  void applyCouplingSize();
   /// Counts a divergence and recovers the simulator (initial shape; time and inputs carry on).
   void recoverFromDivergence(const std::string& why);
 
@@ -85,6 +89,11 @@ class CableNode {
   SharedPublisher<cable_msgs::CableState> state_pub_;
   SharedPublisher<visualization_msgs::MarkerArray> marker_pub_;
   SharedPublisher<geometry_msgs::WrenchStamped> wrench_pub_, wrench_world_pub_, base_wrench_pub_, base_wrench_world_pub_;
+  /// rov_coupling (attached loads only): the ROV's port with its stiffness and damping.
+  SharedPublisher<cable_msgs::CouplingPort> port_pub_;
+  cable_msgs::CouplingPort port_msg_;
+  /// An attached load's coupling sized for the pose exchange (null when not attached or ros.min_rov_mass 0).
+  std::unique_ptr<CouplingSizer> sizer_;
   ros::Publisher diagnostics_pub_;
   ros::Publisher seabed_pub_, contact_pub_;  ///< with a seabed: the bottom (latched), the links on it
   visualization_msgs::Marker contact_marker_;

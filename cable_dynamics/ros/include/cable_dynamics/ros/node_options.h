@@ -26,6 +26,9 @@ struct NodeOptions {
   double tension_scale = 0.0;      ///< colour scale top [N]; 0 = the largest tension seen so far
   double diagnostics_period = 1.0;  ///< [s]
   BodyShapes shapes;                ///< rviz sizes of the vessel and the ROV (`vessel_size`, `rov_size`) [m]
+  /// The lightest ROV an attached load's pose exchange must hold [kg]: the coupling is softened for it at the
+  /// exchange's delay (CouplingSizer); 0 keeps the configured coupling whatever the exchange.
+  double min_rov_mass = 5.0;
 };
 
 /// Validates the `ros` section of a parameter tree (absent: all defaults). `default_prefix` is the
