@@ -7,26 +7,17 @@
 #include <Eigen/Geometry>
 
 #include "cable_dynamics/dynamics/paper_model.h"
+#include "cable_dynamics/params/format_values.h"
 
 namespace cable_dynamics {
 namespace python {
 namespace {
 
-template <class Vector>
-std::string describe(const Vector& v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "[";
-  for (int i = 0; i < v.size(); ++i) s << (i ? ", " : "") << v(i);
-  s << "]";
-  return s.str();
-}
-
 /// Python's (x, y, z, w) as a quaternion; the simulator's setter checks it (params/input_gate.h).
 Eigen::Quaterniond attitude(const char* name, const Eigen::Vector4d& xyzw) {
   const double norm = xyzw.norm();
   if (!xyzw.allFinite() || norm < 1e-6) {
-    throw std::invalid_argument(std::string(name) + " = " + describe(xyzw) +
+    throw std::invalid_argument(std::string(name) + " = " + formatVector(xyzw) +
                                 ": expected a finite quaternion (x, y, z, w) of non-zero length");
   }
   return Eigen::Quaterniond(xyzw(3), xyzw(0), xyzw(1), xyzw(2)).normalized();

@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "cable_dynamics/params/format_values.h"
+
 namespace cable_dynamics {
 
 const char* const kNoWinchMessage = "no winch is configured (config key winch:): the cable's length is fixed";
@@ -16,16 +18,6 @@ std::string number(double v) {
   std::ostringstream s;
   s.precision(17);
   s << v;
-  return s.str();
-}
-
-template <class Vector>
-std::string vector(const Vector& v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "[";
-  for (int i = 0; i < v.size(); ++i) s << (i ? ", " : "") << v(i);
-  s << "]";
   return s.str();
 }
 
@@ -142,19 +134,19 @@ bool winchSpeedAllowed(double speed, double max_speed) { return std::isfinite(sp
 
 void checkPosition(const char* key, const Eigen::Vector3d& position) {
   if (!positionAllowed(position)) {
-    refuse(key, vector(position), "finite components within +-" + number(kMaxInputPosition) + " m");
+    refuse(key, formatVector(position), "finite components within +-" + number(kMaxInputPosition) + " m");
   }
 }
 
 void checkVelocity(const char* key, const Eigen::Vector3d& velocity) {
   if (!velocityAllowed(velocity)) {
-    refuse(key, vector(velocity), "a finite velocity of at most " + number(kMaxInputSpeed) + " m/s");
+    refuse(key, formatVector(velocity), "a finite velocity of at most " + number(kMaxInputSpeed) + " m/s");
   }
 }
 
 void checkAttitude(const char* key, const Eigen::Quaterniond& attitude) {
   if (!attitude.coeffs().allFinite() || std::abs(attitude.norm() - 1.0) > 1e-6) {
-    refuse(key, vector(attitude.coeffs()), "a finite unit quaternion (x, y, z, w)");
+    refuse(key, formatVector(attitude.coeffs()), "a finite unit quaternion (x, y, z, w)");
   }
 }
 

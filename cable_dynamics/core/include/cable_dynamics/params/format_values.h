@@ -1,0 +1,21 @@
+#pragma once
+/// \file
+/// \brief A vector as refusal messages print it: "[x, y, z]" at full precision (17 digits), so that a value
+///        near a bound never reads as the bound itself.
+
+#include <sstream>
+#include <string>
+
+namespace cable_dynamics {
+
+template <class Vector>
+std::string formatVector(const Vector& v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "[";
+  for (int i = 0; i < v.size(); ++i) s << (i ? ", " : "") << v(i);
+  s << "]";
+  return s.str();
+}
+
+}  // namespace cable_dynamics
