@@ -28,6 +28,7 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/dynamics/energies.cpp
   ${CABLE_CORE_DIR}/src/dynamics/articulated_body.cpp
   ${CABLE_CORE_DIR}/src/dynamics/dense_solver.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/rov_body.cpp
   ${CABLE_CORE_DIR}/src/dynamics/stiff_articulated_body.cpp
   # dynamics/forces: each force's value, power, Jacobian and form at rest (most are header-only), and the
   # energy balance's power sums
@@ -39,6 +40,7 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/simulation/time_schemes/semi_implicit.cpp
   ${CABLE_CORE_DIR}/src/simulation/time_schemes/linear_implicit.cpp
   ${CABLE_CORE_DIR}/src/simulation/body_motion.cpp
+  ${CABLE_CORE_DIR}/src/simulation/station_keeper.cpp
   ${CABLE_CORE_DIR}/src/simulation/winch.cpp
   ${CABLE_CORE_DIR}/src/simulation/winch_links.cpp
   ${CABLE_CORE_DIR}/src/simulation/end_conditions.cpp

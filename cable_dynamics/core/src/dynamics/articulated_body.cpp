@@ -81,6 +81,11 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
   const double load_inertia = model.load().inertia;
   Symmetric3 child = Symmetric3::scaledIdentity(load_inertia);
   Vec3 child_force = toVec3(load_inertia * data.tip_known_acc - data.load_external);
+  if (model.body().active) {  // an ROV body on a ball joint: its 3x3 mass at the tip and its bias (rov_body.h)
+    const Eigen::Matrix3d& m = data.body.tip_mass;
+    child = {child.xx + m(0, 0), m(0, 1), m(0, 2), child.yy + m(1, 1), m(1, 2), child.zz + m(2, 2)};
+    child_force = child_force + toVec3(m * data.tip_known_acc + data.body.tip_bias);
+  }
   for (int k = model.links() - 1; k >= model.firstLink(); --k) {
     const LinkConstants& c = model.of(k);
     LinkBlock& block = data.links.of(k);
@@ -196,6 +201,7 @@ EIGEN_ALWAYS_INLINE void jointForcesPass(const ChainModel& model, ChainData& dat
   }
   const Eigen::Vector3d tip_acc = data.tip_known_acc + toEigen(tip_delta);
   data.load_force = model.load().inertia * tip_acc - data.load_external;
+  if (model.body().active) data.load_force += finishRovBody(model.body(), tip_acc, data.body);
   // The load's added-mass force -m_a a_tip: its power goes with the links' (the kinetic energy is the
   // structure's alone).
   data.added_mass_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);

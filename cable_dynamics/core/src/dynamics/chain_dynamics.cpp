@@ -46,9 +46,10 @@ void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
 }
 
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
-  if (!allFinite(x.tail(StateLayout::moving(links(), model_.firstLink())))) return false;  // what the passes read
+  if (!allFinite(x.tail(StateLayout::moving(x.size(), model_.firstLink())))) return false;  // what the passes read
   applyEnds(ends);
   computeKinematics(model_, data_, x, ends);
+  computeBodyTerms(x, ends);
   computeExternalLoads(model_, data_, ends);
   computeJointTorques(model_, data_, x);
   if (model_.formulation() == Formulation::kRecursive) {
@@ -61,6 +62,13 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   // winch's paid-out cable put in.
   data_.input_power = endsInputPower(model_, data_, ends, data_.joint_force.col(model_.firstLink()));
   return true;
+}
+
+void ChainDynamics::computeBodyTerms(const Eigen::VectorXd& x, const EndInputs& ends) {
+  if (!model_.body().active) return;
+  const int n = links();
+  computeRovBodyTerms(model_.body(), x.segment<4>(StateLayout::bodyAttitude(n)), x.segment<3>(StateLayout::bodyOmega(n)),
+                      data_.tip_velocity, data_.current.at(data_.tip_position.z()), ends.body_thrust, data_.body);
 }
 
 void ChainDynamics::applyEnds(const EndInputs& ends) {
@@ -94,6 +102,11 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
   }
   xdot(StateLayout::dissipated(n)) = -lossPower(model_, data_, data_.added_mass_power);
   xdot(StateLayout::workInput(n)) = data_.input_power;
+  if (model_.body().active) {
+    const RovBodyTerms& body = data_.body;
+    xdot.segment<4>(StateLayout::bodyAttitude(n)) = attitudeRate(body.attitude, body.omega);
+    xdot.segment<3>(StateLayout::bodyOmega(n)) = body.acceleration.tail<3>();
+  }
 }
 
 bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out) {
@@ -127,6 +140,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
 void ChainDynamics::computeLoads(const Eigen::VectorXd& x, const EndInputs& ends) {
   applyEnds(ends);
   computeKinematics(model_, data_, x, ends);
+  computeBodyTerms(x, ends);
   computeExternalLoads(model_, data_, ends);
   computeJointTorques(model_, data_, x);
 }
@@ -134,6 +148,7 @@ void ChainDynamics::computeLoads(const Eigen::VectorXd& x, const EndInputs& ends
 double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude) {
   applyEnds(ends);
   computeKinematics(model_, data_, x, ends);
+  computeBodyTerms(x, ends);
   return solvedMechanicalEnergy(x, magnitude);
 }
 
@@ -168,6 +183,12 @@ void ChainDynamics::paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& 
 
 void ChainDynamics::stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const {
   cable_dynamics::stateFromPaper(links(), q, qd, x);
+  if (!model_.body().active) return;
+  // An ROV body starts level and at rest: its frame (x forward, z up) is the paper frame turned half a
+  // turn about x (the paper frame has z down), the quaternion (0, 1, 0, 0).
+  x.conservativeResize(stateSize());
+  x.segment<4>(StateLayout::bodyAttitude(links())) << 0.0, 1.0, 0.0, 0.0;
+  x.segment<3>(StateLayout::bodyOmega(links())).setZero();
 }
 
 }  // namespace cable_dynamics

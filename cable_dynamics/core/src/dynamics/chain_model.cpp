@@ -35,9 +35,12 @@ ChainModel::ChainModel(const CableParams& params)
   for (int k = 0; k < n_; ++k) attachment_begin_[k + 1] += attachment_begin_[k];
   has_springs_ = p.stiffness_elevation.any() || p.stiffness_azimuth.any() || p.stiffness_torsion.any() ||
                  p.damping_elevation.any() || p.damping_azimuth.any() || p.damping_torsion.any();
-  load_.mass = p.load_mass;
-  load_.inertia = p.load_mass + params.load.added_mass;
-  load_.weight = p.gravity * p.load_submerged_mass;
+  // An ROV body carries its own mass, weight and drag (rov_body.h): the tip then holds no point load.
+  body_ = RovBodyConstants::make(params.load, params.fluid.density, params.gravity);
+  const bool point_load = !body_.active;
+  load_.mass = point_load ? p.load_mass : 0.0;
+  load_.inertia = point_load ? p.load_mass + params.load.added_mass : 0.0;
+  load_.weight = point_load ? p.gravity * p.load_submerged_mass : 0.0;
   load_.drag_area = params.load.drag_area;
   load_.coupling_stiffness = params.load.coupling_stiffness;
   load_.coupling_damping = params.load.coupling_damping;

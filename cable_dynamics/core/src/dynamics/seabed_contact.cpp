@@ -44,7 +44,7 @@ SeabedContactConstants makeSeabedContact(const CableParams& params, const LinkPr
     c.damping[k] = 2.0 * s.damping_ratio * std::sqrt(c.stiffness * (per_length + p.added_mass_per_length(k)));
   }
   const double load_weight = p.gravity * p.load_submerged_mass;
-  c.load_contact = params.load.mode != LoadMode::kAttached && load_weight > 0.0;
+  c.load_contact = params.load.mode != LoadMode::kAttached && params.load.mode != LoadMode::kBody && load_weight > 0.0;
   if (c.load_contact) {
     c.load_stiffness = kRestingShare * load_weight / s.penetration;
     c.load_damping = 2.0 * s.damping_ratio * std::sqrt(c.load_stiffness * (p.load_mass + params.load.added_mass));

@@ -219,11 +219,16 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   // The load, a point at the tip: no rotational inertia, its mass plus the weighted drag and coupling.
   Eigen::Matrix3d child_rr = Eigen::Matrix3d::Zero(), child_rv = Eigen::Matrix3d::Zero();
-  const Eigen::Matrix3d load_mass = (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity +
-                                    cd * (load_drag_ + load_contact_damping_) + ck * load_contact_stiffness_;
+  Eigen::Matrix3d load_mass = (load.inertia + cd * coupling_damping_ + ck * coupling_stiffness_) * identity +
+                              cd * (load_drag_ + load_contact_damping_) + ck * load_contact_stiffness_;
+  Eigen::Vector3d tip_bias = load.inertia * data.tip_known_acc - data.load_external - load_extra_;
+  if (model.body().active) {  // an ROV body on a ball joint: its 3x3 mass and bias at the tip (rov_body.h)
+    load_mass += data.body.tip_mass;
+    tip_bias += data.body.tip_mass * data.tip_known_acc + data.body.tip_bias;
+  }
   Eigen::Matrix3d child_vv = load_mass;
   Eigen::Vector3d child_pr = Eigen::Vector3d::Zero();
-  Eigen::Vector3d child_pv = load.inertia * data.tip_known_acc - data.load_external - load_extra_;
+  Eigen::Vector3d child_pv = tip_bias;
   for (int k = n - 1; k >= first; --k) {
     StiffLinkTerms& t = links_[k];
     const LinkConstants& c = model.of(k);
@@ -304,7 +309,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
   tip_delta_ = d;
   // Joint forces from the tip inwards, J_k = J_{k+1} + (the link's inertia force less its loads), for
   // the tensions the next linearization's geometric stiffness reads.
-  Eigen::Vector3d joint = load_mass * d + load.inertia * data.tip_known_acc - data.load_external - load_extra_;
+  Eigen::Vector3d joint = load_mass * d + tip_bias;
   tip_tension_ = -joint.dot(blocks.get(&LinkBlock::u, n - 1));
   for (int k = n - 1; k >= first; --k) {
     StiffLinkTerms& t = links_[k];

@@ -91,11 +91,63 @@ MotionParams parseMotion(Section motion) {
   return m;
 }
 
+/// A square matrix given whole (size^2 numbers, row by row) or by its diagonal (size numbers).
+template <int Size>
+Eigen::Matrix<double, Size, Size> squareMatrix(Section& s, const std::string& key, double limit, const char* unit) {
+  Eigen::Matrix<double, Size, Size> m = Eigen::Matrix<double, Size, Size>::Zero();
+  if (!s.has(key)) return m;
+  const bool whole = s.raw(key).IsSequence() && s.raw(key).size() == static_cast<std::size_t>(Size * Size);
+  const std::vector<double> v = s.numberList(key, whole ? Size * Size : Size, -limit, limit, false, unit);
+  for (int r = 0; r < Size; ++r) {
+    if (!whole) m(r, r) = v[r];
+    for (int c = 0; whole && c < Size; ++c) m(r, c) = v[Size * r + c];
+  }
+  return m;
+}
+
+/// What load.body holds: the ROV's matrices, damping, centres and station keeper (cable_params.h).
+/// Symmetry and definiteness are the gate's (input_gate.cpp), which names the key.
+RovBodyParams parseRovBody(Section body) {
+  RovBodyParams b;
+  b.inertia = squareMatrix<3>(body, "inertia", 1e9, "kg m^2");
+  b.added_mass = squareMatrix<6>(body, "added_mass", 1e9, "kg, kg m, kg m^2");
+  const auto six = [&body](const char* key, double lo, const char* unit) {
+    Eigen::Matrix<double, 6, 1> v = Eigen::Matrix<double, 6, 1>::Zero();
+    if (!body.has(key)) return v;
+    const std::vector<double> list = body.numberList(key, 6, lo, 1e9, false, unit);
+    for (int i = 0; i < 6; ++i) v(i) = list[i];
+    return v;
+  };
+  b.linear_damping = six("linear_damping", 0.0, "N s/m, N m s/rad");
+  b.quadratic_damping = six("quadratic_damping", 0.0, "N s^2/m^2, N m s^2/rad^2");
+  b.center_of_gravity = vector3(body, "center_of_gravity", 100.0, "m");
+  b.center_of_buoyancy = vector3(body, "center_of_buoyancy", 100.0, "m");
+  Section keeper = body.sub("station_keeping");
+  const auto gains = [&keeper](const char* key, const char* unit) {
+    if (!keeper.has(key)) return Eigen::Vector3d::Zero().eval();
+    const std::vector<double> v = keeper.numberList(key, 3, 0.0, 1e9, false, unit);
+    return Eigen::Vector3d(v[0], v[1], v[2]);
+  };
+  b.position_gain = gains("position_gain", "N/m");
+  b.velocity_gain = gains("velocity_gain", "N s/m");
+  b.attitude_gain = gains("attitude_gain", "N m/rad");
+  b.rate_gain = gains("rate_gain", "N m s/rad");
+  b.max_force = keeper.number("max_force", 1e300, 0.0, 1e300, false, "N");
+  b.max_torque = keeper.number("max_torque", 1e300, 0.0, 1e300, false, "N m");
+  keeper.rejectUnknownKeys();
+  body.rejectUnknownKeys();
+  return b;
+}
+
 void parseLoad(Section load, CableParams& p) {
   p.load.mass = load.number("mass", 0.0, 0.0, 1e7, false, "kg");
   p.load.volume = load.number("volume", 0.0, 0.0, 1e4, false, "m^3");
-  const std::string mode = load.choice("mode", "free", {"free", "anchored", "attached"});
-  p.load.mode = mode == "free" ? LoadMode::kFree : mode == "anchored" ? LoadMode::kAnchored : LoadMode::kAttached;
+  const std::string mode = load.choice("mode", "free", {"free", "anchored", "attached", "body"});
+  p.load.mode = mode == "free"       ? LoadMode::kFree
+                : mode == "anchored" ? LoadMode::kAnchored
+                : mode == "attached" ? LoadMode::kAttached
+                                     : LoadMode::kBody;
+  if (load.has("body")) p.load.body = parseRovBody(load.sub("body"));
   p.load.drag_area = load.number("drag_area", 0.0, 0.0, 1e4, false, "m^2");
   p.load.added_mass = load.number("added_mass", 0.0, 0.0, 1e7, false, "kg");
   Section coupling = load.sub("coupling");

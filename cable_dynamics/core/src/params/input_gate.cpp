@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include <Eigen/Eigenvalues>
+
 #include "cable_dynamics/params/format_values.h"
 
 namespace cable_dynamics {
@@ -26,6 +28,43 @@ std::string number(double v) {
   throw std::invalid_argument(key + " = " + value + ": expected " + expected);
 }
 
+/// A symmetric matrix that is positive definite (semi-definite when `semi`), or a ConfigError naming `key`.
+template <typename Matrix>
+void requireSymmetricDefinite(const Matrix& m, const std::string& key, bool semi) {
+  const double scale = m.cwiseAbs().maxCoeff();
+  if ((m - m.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(scale, 1e-300)) {
+    throw ConfigError(key, formatMatrixRows(m), "a symmetric matrix");
+  }
+  const double least = Eigen::SelfAdjointEigenSolver<Matrix>(m, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  if (semi ? least < -1e-9 * scale : !(least > 1e-12 * scale && scale > 0.0)) {
+    throw ConfigError(key, formatMatrixRows(m),
+                      std::string(semi ? "positive semi-definite" : "positive definite") + " (least eigenvalue " +
+                          number(least) + ")");
+  }
+}
+
+/// load.mode body: the ROV's mass, matrices and the integrators and ends that carry it (rov_body.h).
+void checkRovBody(const CableParams& p) {
+  const LoadParams& load = p.load;
+  if (!(load.mass > 0.0)) throw ConfigError("load.mass", number(load.mass), "> 0 kg with load.mode: body");
+  requireSymmetricDefinite(load.body.inertia, "load.body.inertia", false);
+  requireSymmetricDefinite(load.body.added_mass, "load.body.added_mass", true);
+  if (load.drag_area > 0.0 || load.added_mass > 0.0) {
+    throw ConfigError(load.drag_area > 0.0 ? "load.drag_area" : "load.added_mass",
+                      number(std::max(load.drag_area, load.added_mass)),
+                      "0 with load.mode: body (the body's drag and added mass are load.body.*)");
+  }
+  if (load.fixity != TipFixity::kPinned) {
+    throw ConfigError("load.fixity", "clamped", "pinned with load.mode: body (the tether hangs from a ball joint)");
+  }
+  if (p.simulation.formulation != Formulation::kRecursive) {
+    throw ConfigError("simulation.formulation", "paper", "recursive with load.mode: body");
+  }
+  if (p.simulation.integrator == Integrator::kSemiImplicit) {
+    throw ConfigError("simulation.integrator", "semi_implicit", "rk4 or implicit with load.mode: body");
+  }
+}
+
 }  // namespace
 
 void checkConfigRules(const CableParams& p) {
@@ -43,6 +82,7 @@ void checkConfigRules(const CableParams& p) {
     throw ConfigError("cable.stiffness.azimuth", std::to_string(k.azimuth),
                       "0 or equal to stiffness.elevation with model: bending (the bend spring is elevation)");
   }
+  if (p.load.mode == LoadMode::kBody) checkRovBody(p);
   if (p.load.fixity == TipFixity::kClamped && p.load.mode == LoadMode::kFree) {
     throw ConfigError("load.fixity", "clamped", "pinned with load.mode: free (a clamp needs an anchor or an ROV to hold it)");
   }
@@ -142,6 +182,14 @@ void checkVelocity(const char* key, const Eigen::Vector3d& velocity) {
   if (!velocityAllowed(velocity)) {
     refuse(key, formatVector(velocity), "a finite velocity of at most " + number(kMaxInputSpeed) + " m/s");
   }
+}
+
+bool thrustAllowed(const Eigen::Vector3d& thrust) {
+  return thrust.allFinite() && thrust.cwiseAbs().maxCoeff() <= kMaxThrust;
+}
+
+void checkThrust(const char* key, const Eigen::Vector3d& thrust) {
+  if (!thrustAllowed(thrust)) refuse(key, formatVector(thrust), "finite components within +-" + number(kMaxThrust));
 }
 
 void checkAttitude(const char* key, const Eigen::Quaterniond& attitude) {

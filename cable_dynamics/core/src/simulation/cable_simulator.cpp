@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cable_dynamics/dynamics/frames.h"
+#include "cable_dynamics/dynamics/rov_body.h"
 #include "cable_dynamics/params/input_gate.h"
 #include "cable_dynamics/params/states.h"
 #include "cable_dynamics/simulation/winch_links.h"
@@ -21,7 +22,8 @@ CableSimulator::CableSimulator(const CableParams& params, SimulatorUse use)
     : params_(params),
       use_(use),
       dynamics_(params),
-      scheme_(makeTimeScheme(params.simulation.integrator, params.links, params.simulation.rho_infinity)),
+      scheme_(makeTimeScheme(params.simulation.integrator, params.links, params.simulation.rho_infinity,
+                             params.load.mode == LoadMode::kBody)),
       ends_(params.base, params.load, params.winch),
       limits_(stepLimits(*std::min_element(params.link_lengths.begin(), params.link_lengths.end()), params.gravity)),
       dt_(params.simulation.dt) {
@@ -49,6 +51,62 @@ void CableSimulator::reset() {
     const StaticSolution s = resetToEquilibrium();
     if (!s.converged) throw std::runtime_error("initial.mode = equilibrium: " + s.message);
   }
+  commanded_thrust_.setZero();
+  applied_thrust_.setZero();
+  if (hasBody()) {  // the station keeper holds the start pose until told otherwise
+    const BodyPose pose = bodyPose();
+    body_target_position_ = pose.position;
+    body_target_attitude_ = pose.attitude;
+  }
+}
+
+namespace {
+/// The world frame from the paper frame: the half turn about x (frames.h), on a rotation.
+Eigen::Matrix3d paperToWorldRotation(const Eigen::Matrix3d& paper) {
+  return Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal() * paper;
+}
+}  // namespace
+
+BodyPose CableSimulator::bodyPose() {
+  BodyPose pose;
+  if (!hasBody()) return pose;
+  double magnitude = 0.0;
+  dynamics_.mechanicalEnergy(x_, ends_.at(time_), magnitude);  // the kinematics and the body's terms at x
+  const ChainData& data = dynamics_.data();
+  const RovBodyTerms& body = data.body;
+  pose.position = paperToWorld(rovBodyOrigin(dynamics_.model().body(), body.rotation, data.tip_position));
+  pose.attitude = Eigen::Quaterniond(paperToWorldRotation(body.rotation)).normalized();
+  pose.velocity = paperToWorld(body.rotation * body.velocity.head<3>());
+  pose.angular_velocity = body.omega;
+  return pose;
+}
+
+void CableSimulator::setBodyThrust(const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
+  if (!hasBody()) throw std::invalid_argument("body thrust: load.mode is not body (no ROV body is simulated)");
+  checkThrust("body thrust force", force);
+  checkThrust("body thrust torque", torque);
+  commanded_thrust_ << force, torque;
+}
+
+void CableSimulator::setBodyTarget(const Eigen::Vector3d& position, const Eigen::Quaterniond& attitude) {
+  if (!hasBody()) throw std::invalid_argument("body target: load.mode is not body (no ROV body is simulated)");
+  checkPosition("body target position", position);
+  checkAttitude("body target attitude", attitude);
+  body_target_position_ = position;
+  body_target_attitude_ = attitude;
+}
+
+void CableSimulator::updateBodyThrust() {
+  Eigen::Matrix<double, 6, 1> thrust = commanded_thrust_;
+  const RovBodyParams& keeper = params_.load.body;
+  if (stationKeepingEnabled(keeper)) {
+    const double submerged_weight = (params_.load.mass - params_.fluid.density * params_.load.volume) * params_.gravity;
+    thrust += stationKeepingWrench(keeper, submerged_weight, bodyPose(), body_target_position_, body_target_attitude_);
+  }
+  if (thrust == applied_thrust_) return;
+  applied_thrust_ = thrust;
+  ends_.setBodyThrust(thrust);
+  scheme_->forget();  // RK4's first stage was evaluated under the old thrust
 }
 
 StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) {
@@ -178,6 +236,12 @@ bool CableSimulator::advance(double h) {
   if (!scheme_->advance(dynamics_, ends_, time_, h, x_)) return false;
   time_ += h;
   if (!projectAxes(x_, n, firstLink())) return false;  // the links on a winch's drum do not move
+  if (dynamics_.model().body().active) {  // the ROV's quaternion back to unit length
+    auto attitude = x_.segment<4>(StateLayout::bodyAttitude(n));
+    const double norm = attitude.norm();
+    if (!(norm > 0.5 && norm < 2.0)) return false;
+    attitude /= norm;
+  }
   if (judgeStep(x_, n, limits_, firstLink()) != StepVerdict::kAccepted) return false;
   if (!scheme_->balancesEnergy()) return true;
   // The energy after the step comes from an evaluation at the new state (which RK4 keeps as the next
@@ -203,9 +267,10 @@ StepReport CableSimulator::step() {
     throw std::logic_error("step: this simulator was built for its statics only (its time step was not checked)");
   }
   StepReport report;
-  const int moving = StateLayout::moving(links(), firstLink());  // a winch's drum slots do not change in a step
+  const int moving = StateLayout::moving(x_.size(), firstLink());  // a winch's drum slots do not change in a step
   x_start_.tail(moving) = x_.tail(moving);
   const double t0 = time_;
+  if (hasBody()) updateBodyThrust();
   if (hasWinch()) {
     Winch& winch = ends_.winch();
     winch.followSchedule(t0);
@@ -264,6 +329,15 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.line_pull = out.chain.tension(out.first_link);
   out.vessel_attitude = ends_.baseAttitude(time_);
   out.rov_attitude = ends_.loadAttitude(time_);
+  out.rov_velocity.setZero();
+  out.rov_angular_velocity.setZero();
+  out.rov_thrust = applied_thrust_;
+  if (hasBody()) {  // from the evaluation above: the body's terms at x
+    const RovBodyTerms& body = dynamics_.data().body;
+    out.rov_attitude = Eigen::Quaterniond(paperToWorldRotation(body.rotation)).normalized();
+    out.rov_velocity = paperToWorld(body.rotation * body.velocity.head<3>());
+    out.rov_angular_velocity = body.omega;
+  }
   out.vessel_origin = paperToWorld(ends.base_position) - out.vessel_attitude * params_.base.hang_off;
   out.rov_origin = paperToWorld(ends.load_coupled ? ends.target_position : out.chain.ends.col(n)) -
                    out.rov_attitude * params_.load.attachment;

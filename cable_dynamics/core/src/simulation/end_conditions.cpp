@@ -56,6 +56,7 @@ void EndConditions::reset() {
   external_base_ = false;
   load_attitude_ = base_attitude_ = Eigen::Quaterniond::Identity();
   external_clamp_twist_ = rest_clamp_twist_;
+  body_thrust_.setZero();
 }
 
 EndInputs EndConditions::at(double t) const {
@@ -66,7 +67,8 @@ EndInputs EndConditions::at(double t) const {
   } else {
     motionAt(base_.motion, base_.hang_off, t, ends.base_position, ends.base_velocity, ends.base_acceleration);
   }
-  ends.load_coupled = load_.mode != LoadMode::kFree;
+  ends.load_coupled = load_.mode == LoadMode::kAnchored || load_.mode == LoadMode::kAttached;
+  ends.body_thrust = body_thrust_;
   if (external_load_) {
     // First-order hold: the pose carried on by its velocity, within the extrapolation limit.
     const double ahead = t - load_time_;

@@ -170,7 +170,9 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
   double current = params.fluid.current.norm();
   for (const Eigen::Vector4d& row : params.fluid.current_profile) current = std::max(current, row.tail<3>().norm());
   const double ends_speed = std::max(fastestSpeed(params.base.motion),
-                                     params.load.mode != LoadMode::kFree ? fastestSpeed(params.load.motion) : 0.0);
+                                     params.load.mode == LoadMode::kAnchored || params.load.mode == LoadMode::kAttached
+                                         ? fastestSpeed(params.load.motion)
+                                         : 0.0);
   const double flow = params.fluid.density > 0.0 ? current + ends_speed : 0.0;
   // The tension bound: the hanging tension plus the normal drag of the whole deployed length at that
   // flow (and the load's). At rest in a current the drag sets the tension as much as the weight does
@@ -251,7 +253,22 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
                       (row(across_stiffness) + tip_k) / transverse + tension * l / with_fluid,
                       "the bending of link " + link + " (bend springs and dampers, tension, drag)");
   }
-  if (params.load.mode != LoadMode::kFree && n > 0) {
+  if (params.load.mode == LoadMode::kBody) {
+    // The ROV body's own modes, each axis on its own: damping (linear, and quadratic at the flow) and the
+    // station keeper's gains on the mass plus added mass; the restoring moment (W |r_g - r_b|) in roll and pitch.
+    const RovBodyParams& b = params.load.body;
+    const double righting = p.gravity * params.load.mass * (b.center_of_gravity - b.center_of_buoyancy).norm();
+    for (int axis = 0; axis < 6; ++axis) {
+      const bool turn = axis >= 3;
+      const double inertia = (turn ? b.inertia(axis - 3, axis - 3) : params.load.mass) + b.added_mass(axis, axis);
+      const double damping = b.linear_damping(axis) + b.quadratic_damping(axis) * (turn ? 1.0 : flow) +
+                             (turn ? b.rate_gain(axis - 3) : b.velocity_gain(axis));
+      const double stiffness = (turn ? b.attitude_gain(axis - 3) + (axis < 5 ? righting : 0.0) : b.position_gain(axis));
+      stiffest.consider(damping / inertia, stiffness / inertia, "the ROV body's axis " + std::to_string(axis + 1) +
+                                                                    " (damping, station keeping, restoring)");
+    }
+  }
+  if ((params.load.mode == LoadMode::kAnchored || params.load.mode == LoadMode::kAttached) && n > 0) {
     const double l = p.length(n - 1);
     const double tip_mass = p.load_mass + params.load.added_mass + 0.5 * (p.mass(n - 1) + p.added_mass_per_length(n - 1) * l);
     stiffest.consider(params.load.coupling_damping / tip_mass, params.load.coupling_stiffness / tip_mass,

@@ -34,7 +34,7 @@ bool projectAxes(Eigen::VectorXd& x, int n, int first) {
 
 StepVerdict judgeStep(const Eigen::VectorXd& x, int n, const StepLimits& limits, int first) {
   // One sum: any NaN or infinity shows.
-  if (!std::isfinite(x.tail(StateLayout::moving(n, first)).sum())) return StepVerdict::kNotFinite;
+  if (!std::isfinite(x.tail(StateLayout::moving(x.size(), first)).sum())) return StepVerdict::kNotFinite;
   const double limit_squared = limits.max_angular_velocity * limits.max_angular_velocity;
   for (int k = first; k < n; ++k) {
     if (!(x.segment<3>(StateLayout::omega(k)).squaredNorm() < limit_squared)) return StepVerdict::kRunawaySpin;

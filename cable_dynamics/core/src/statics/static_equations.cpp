@@ -108,6 +108,16 @@ Eigen::Vector3d StaticEquations::loadForceFree(const Eigen::Vector3d& tip) const
     f += contactForceAtRest(c.loadLaw(contact_scale_), place);
   }
   if (in_water_ && load.drag_area > 0.0) f += pointDragAtRest(model_.fluidDensity(), load.drag_area, current_.at(tip.z()));
+  const RovBodyConstants& body = model_.body();
+  if (body.active) {
+    // An ROV body held level at rest (its attitude settles in the dynamics): its submerged weight, and its
+    // translational damping in the current, -D(nu_r) nu_r with nu_r = -R^T v_c (R: level, paper from body).
+    f.z() += body.weight - body.buoyancy;
+    const Eigen::Matrix3d level = Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal();
+    const Eigen::Vector3d flow = level.transpose() * current_.at(tip.z());
+    const Eigen::Array3d d = body.linear_damping.head<3>().array() + body.quadratic_damping.head<3>().array() * flow.array().abs();
+    f += level * (d * flow.array()).matrix();
+  }
   return f;
 }
 

@@ -53,6 +53,7 @@ struct ChainData {
   Eigen::Vector3d load_external = Eigen::Vector3d::Zero();  ///< weight, drag and coupling on the load
   Eigen::Vector3d coupling = Eigen::Vector3d::Zero();       ///< PD force of the anchor / ROV on the load
   Eigen::Vector3d load_force = Eigen::Vector3d::Zero();     ///< force the cable exerts on the load
+  RovBodyTerms body;  ///< the ROV body's terms (load.mode body: rov_body.h)
 
   Eigen::Matrix3Xd joint_force;     ///< (3 x n) force on the outboard part at joint k's base end [N]
   Eigen::Matrix3Xd spring_torque;   ///< (3 x n) joint springs on each link [N m]

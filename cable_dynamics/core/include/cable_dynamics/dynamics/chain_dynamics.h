@@ -58,7 +58,7 @@ class ChainDynamics {
   /// What the ends set in the model and the data before any pass: the winch's link length, the clamp.
   /// Every evaluation calls it; the statics call it to see the model as the ends have it now.
   void applyEnds(const EndInputs& ends);
-  int stateSize() const { return StateLayout::size(model_.links()); }
+  int stateSize() const { return StateLayout::size(model_.links(), model_.body().active); }
   const ChainModel& model() const { return model_; }
   const LinkProperties& properties() const { return model_.properties(); }
   ChainData& data() { return data_; }
@@ -105,6 +105,8 @@ class ChainDynamics {
   /// The passes up to the accelerations (and all joint forces or only joint 0's).
   bool solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces);
   void writeRates(Eigen::VectorXd& xdot) const;  ///< x' from the solved state, after solve()
+  /// The ROV body's terms at x (load.mode body; nothing otherwise), after the kinematics.
+  void computeBodyTerms(const Eigen::VectorXd& x, const EndInputs& ends);
 
   ChainModel model_;
   ChainData data_;

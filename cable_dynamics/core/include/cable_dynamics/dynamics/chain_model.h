@@ -12,6 +12,7 @@
 #include "cable_dynamics/dynamics/forces/coupling.h"
 #include "cable_dynamics/dynamics/forces/tip_clamp.h"
 #include "cable_dynamics/dynamics/link_block.h"
+#include "cable_dynamics/dynamics/rov_body.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
 #include "cable_dynamics/params/cable_params.h"
 
@@ -78,6 +79,8 @@ class ChainModel {
   /// true when some attachment has drag (the drag pass then visits them).
   bool attachmentDrag() const { return attachment_drag_; }
   const LoadConstants& load() const { return load_; }
+  /// The ROV body hung on the tip (load.mode body; inactive otherwise).
+  const RovBodyConstants& body() const { return body_; }
   /// A clamped tip's bend spring and damper (forces/tip_clamp.h; inactive unless load.fixity is clamped).
   TipClamp tipClamp() const { return {properties_.tip_clamp_stiffness, properties_.tip_clamp_damping}; }
   /// The seabed and its contact's constants (disabled when the config has no seabed).
@@ -105,6 +108,7 @@ class ChainModel {
   double fluid_density_;
   LinkDrag drag_;
   LoadConstants load_;
+  RovBodyConstants body_;
   SeabedContactConstants seabed_;
   /// Per slot, the sums over its attachments: structure (m, m s, m s^2), added mass (the same moments),
   /// submerged mass (m_s, m_s s).

@@ -16,10 +16,15 @@ struct StateLayout {
   static int omega(int k) { return kPerLink * k + 4; }
   static int dissipated(int n) { return kPerLink * n; }  ///< energy taken out by drag, added mass, dampers [J]
   static int workInput(int n) { return kPerLink * n + 1; }  ///< work done by the moving ends [J]
-  static int size(int n) { return kPerLink * n + 2; }
-  /// The part of x that moves when slots [0, first) are on a winch's drum: everything from link
-  /// `first` on, the accumulators included (the tail of x, of this many entries).
-  static int moving(int n, int first) { return size(n) - kPerLink * first; }
+  /// With an ROV body (load.mode body) x ends with its attitude (paper frame from body frame, a unit
+  /// quaternion w, x, y, z) and its angular velocity (body frame) [rad/s] (dynamics/rov_body.h).
+  static constexpr int kBody = 7;
+  static int bodyAttitude(int n) { return kPerLink * n + 2; }
+  static int bodyOmega(int n) { return kPerLink * n + 6; }
+  static int size(int n, bool body = false) { return kPerLink * n + 2 + (body ? kBody : 0); }
+  /// The part of a state of `size` entries that moves when slots [0, first) are on a winch's drum:
+  /// everything from link `first` on, the accumulators and a body included (the tail of x).
+  static int moving(Eigen::Index size, int first) { return static_cast<int>(size) - kPerLink * first; }
 };
 
 /// What drives the ends during one evaluation (paper frame, z down, origin at the base's rest position).
@@ -47,6 +52,8 @@ struct EndInputs {
   double winch_length = 0.0;        ///< [m]
   double winch_speed = 0.0;         ///< + paying out [m/s]
   double winch_acceleration = 0.0;  ///< [m/s^2]
+  /// The ROV body's thrust (load.mode body): force and moment at its origin, body frame [N, N m].
+  Eigen::Matrix<double, 6, 1> body_thrust = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 }  // namespace cable_dynamics

@@ -51,6 +51,7 @@ enum class LoadMode {
   kFree,      ///< the load hangs at the tip, moved only by the cable and the fluid
   kAnchored,  ///< the load is held at a fixed point (seabed) by PD constraint forces
   kAttached,  ///< the load follows an external pose (the ROV) through a stiff PD coupling
+  kBody,      ///< the load is an ROV body simulated here (6 DOF, Fossen's form), hung on the tip at load.attachment
 };
 
 /// Spring constants per direction for every joint [N m/rad], or rigidities from which they are derived.
@@ -86,6 +87,31 @@ struct MotionParams {
   Eigen::Vector3d attitude_phase = Eigen::Vector3d::Zero();  ///< [rad]
 };
 
+/// The ROV of load.mode body: a rigid body in Fossen's form (Handbook of Marine Craft Hydrodynamics and
+/// Motion Control, 2011, ch. 6-7), in its own frame (x forward, y left, z up: REP-103) about its origin O.
+/// Its mass and displaced volume are load.mass and load.volume.
+struct RovBodyParams {
+  /// Rigid-body inertia about the centre of gravity, body frame [kg m^2]: symmetric positive definite.
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity();
+  /// Added mass about O, body frame, rows and columns (surge, sway, heave, roll, pitch, yaw) [kg, kg m,
+  /// kg m^2]: symmetric positive semi-definite (the hydrodynamic derivatives' minus: M_A = -[X_u' ...]).
+  Eigen::Matrix<double, 6, 6> added_mass = Eigen::Matrix<double, 6, 6>::Zero();
+  /// Linear and quadratic damping per axis, on the velocity relative to the water [N s/m, N m s/rad] and
+  /// [N s^2/m^2, N m s^2/rad^2]: the force is -(d_l + d_q |nu_r|) nu_r on each of the six axes, >= 0.
+  Eigen::Matrix<double, 6, 1> linear_damping = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, 6, 1> quadratic_damping = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Vector3d center_of_gravity = Eigen::Vector3d::Zero();   ///< from O, body frame [m]
+  Eigen::Vector3d center_of_buoyancy = Eigen::Vector3d::Zero();  ///< from O, body frame [m]
+  /// The built-in station keeper (simulation/station_keeper.h): a PD law on the pose error towards the
+  /// start pose (or a target set later), its wrench added to the commanded thrust. Off when all gains are 0.
+  Eigen::Vector3d position_gain = Eigen::Vector3d::Zero();  ///< world x, y, z [N/m]
+  Eigen::Vector3d velocity_gain = Eigen::Vector3d::Zero();  ///< world x, y, z [N s/m]
+  Eigen::Vector3d attitude_gain = Eigen::Vector3d::Zero();  ///< body roll, pitch, yaw [N m/rad]
+  Eigen::Vector3d rate_gain = Eigen::Vector3d::Zero();      ///< body roll, pitch, yaw [N m s/rad]
+  double max_force = 1e300;   ///< the station keeper's force saturates at this norm [N]
+  double max_torque = 1e300;  ///< and its torque at this norm [N m]
+};
+
 /// The terminal load (ROV, clump weight or nothing).
 struct LoadParams {
   double mass = 0.0;    ///< [kg], 0 = bare cable
@@ -105,6 +131,7 @@ struct LoadParams {
   /// (the half link to the tip, as at the base) and the bend damper. Torsion stays free (a swivel).
   TipFixity fixity = TipFixity::kPinned;
   Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ();  ///< unit [-]
+  RovBodyParams body;  ///< mode body only
 };
 
 /// The cable's base (vessel, cage or fixed point).

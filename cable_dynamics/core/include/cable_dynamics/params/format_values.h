@@ -19,3 +19,15 @@ std::string formatVector(const Vector& v) {
 }
 
 }  // namespace cable_dynamics
+
+namespace cable_dynamics {
+
+/// A matrix row by row, "[[a, b], [c, d]]", each row as formatVector prints it.
+template <class Matrix>
+std::string formatMatrixRows(const Matrix& m) {
+  std::string out = "[";
+  for (int r = 0; r < m.rows(); ++r) out += (r ? ", " : "") + formatVector(m.row(r).transpose().eval());
+  return out + "]";
+}
+
+}  // namespace cable_dynamics

@@ -24,6 +24,8 @@ namespace cable_dynamics {
 constexpr double kMaxInputPosition = 1e6;
 /// Fastest target: a pose stream implying a faster ROV or base is a jump [m/s].
 constexpr double kMaxInputSpeed = 20.0;
+/// Largest thrust force and torque an ROV body takes (each component) [N], [N m]: beyond any thruster.
+constexpr double kMaxThrust = 1e7;
 /// Largest |component| of the current, as fluid.current in a config [m/s].
 constexpr double kMaxCurrentSpeed = 100.0;
 
@@ -59,6 +61,10 @@ void checkAttitude(const char* key, const Eigen::Quaterniond& attitude);
 /// A uniform current in world axes [m/s]: fluid.current's range, each component named as the loader
 /// names it (fluid.current[i]).
 void checkCurrent(const Eigen::Vector3d& current);
+/// Every component of a thrust (force [N] or torque [N m]) finite and within +-kMaxThrust.
+bool thrustAllowed(const Eigen::Vector3d& thrust);
+/// `key` = thrust: thrustAllowed.
+void checkThrust(const char* key, const Eigen::Vector3d& thrust);
 /// A winch speed command [m/s] within +-winch.max_speed.
 void checkWinchSpeed(double speed, const WinchParams& winch);
 /// A winch length target [m] within [winch.min_length, winch.max_length].

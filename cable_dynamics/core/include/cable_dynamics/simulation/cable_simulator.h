@@ -14,6 +14,7 @@
 #include "cable_dynamics/simulation/body_motion.h"
 #include "cable_dynamics/simulation/end_conditions.h"
 #include "cable_dynamics/simulation/stable_step.h"
+#include "cable_dynamics/simulation/station_keeper.h"
 #include "cable_dynamics/simulation/step_check.h"
 #include "cable_dynamics/simulation/time_schemes/time_scheme.h"
 #include "cable_dynamics/statics/static_solver.h"
@@ -70,6 +71,12 @@ struct SimulationSnapshot {
   BodyWrench rov;
   /// The coupling's port at the attachment point, with its stiffness and damping (attached mode).
   CouplingPort port;
+  /// The ROV body (load.mode body; zero otherwise): its origin's velocity (world axes) [m/s], its angular
+  /// velocity (body frame) [rad/s], the thrust it applies at its origin (body frame; commanded plus station
+  /// keeping) [N, N m], and its kinetic and potential energy (in chain's energies too) [J].
+  Eigen::Vector3d rov_velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rov_angular_velocity = Eigen::Vector3d::Zero();
+  Eigen::Matrix<double, 6, 1> rov_thrust = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 /// Outcome of one step.
@@ -192,6 +199,20 @@ class CableSimulator {
   void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                      const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
 
+  // The ROV body (load.mode body). Each setter throws std::invalid_argument without a body or on a
+  // refused value (the gate's message).
+
+  /// true when the load is an ROV body simulated here.
+  bool hasBody() const { return dynamics_.model().body().active; }
+  /// The commanded thrust at the body's origin, body frame [N], [N m] (what a thruster allocator gives),
+  /// held until the next call or reset(); the station keeper's wrench adds to it.
+  void setBodyThrust(const Eigen::Vector3d& force, const Eigen::Vector3d& torque);
+  /// The station keeper's target: the body's origin (world axes) [m] and attitude (world from body);
+  /// the body's pose at reset until set.
+  void setBodyTarget(const Eigen::Vector3d& position, const Eigen::Quaterniond& attitude);
+  /// The body's pose and twist now (world axes; angular velocity in the body frame).
+  BodyPose bodyPose();
+
   /// How far the energy balance has drifted since reset (schemes that balance energy: RK4), as a
   /// fraction of the largest mechanical energy scale seen [-]; an unstable mode that the per-step
   /// check lets through a little at a time shows here. Negative when not measured (semi-implicit).
@@ -216,6 +237,8 @@ class CableSimulator {
   void deployConfigured();
   /// After an accepted step: the winch moves on and adds or removes a link when its link leaves its band.
   void finishWinchStep();
+  /// Before a step: the body's thrust, commanded plus the station keeper's at the present pose.
+  void updateBodyThrust();
 
   CableParams params_;
   SimulatorUse use_;
@@ -237,6 +260,12 @@ class CableSimulator {
   double regrid_energy_ = 0.0;          ///< [J]
   Eigen::VectorXd x_, x_start_;         ///< (StateLayout::size(n)) the state, and at the step's start
   Eigen::VectorXd q_, qd_;              ///< (3n) for messages
+  // The ROV body: commanded thrust (body frame) [N, N m], the station keeper's target (world) and the
+  // thrust applied in the last step.
+  Eigen::Matrix<double, 6, 1> commanded_thrust_ = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, 6, 1> applied_thrust_ = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Vector3d body_target_position_ = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond body_target_attitude_ = Eigen::Quaterniond::Identity();
 };
 
 }  // namespace cable_dynamics

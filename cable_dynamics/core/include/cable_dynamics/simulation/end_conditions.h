@@ -58,6 +58,9 @@ class EndConditions {
   /// whose attitude is `attitude`; replaces the configured motion.
   void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                      const Eigen::Quaterniond& attitude = Eigen::Quaterniond::Identity());
+  /// The ROV body's thrust (load.mode body): force and moment at its origin, body frame [N, N m], held
+  /// until the next call (the simulator sets it each step: commanded thrust plus station keeping).
+  void setBodyThrust(const Eigen::Matrix<double, 6, 1>& thrust) { body_thrust_ = thrust; }
   /// The vessel's and the ROV's attitude at time t (world from body): external, or the configured motion's.
   Eigen::Quaterniond baseAttitude(double t) const;
   Eigen::Quaterniond loadAttitude(double t) const;
@@ -78,6 +81,7 @@ class EndConditions {
   Eigen::Vector3d base_position_ = Eigen::Vector3d::Zero(), base_velocity_ = Eigen::Vector3d::Zero();
   Eigen::Quaterniond load_attitude_ = Eigen::Quaterniond::Identity(), base_attitude_ = Eigen::Quaterniond::Identity();
   double load_time_ = 0.0;  ///< simulated time of the external load target [s]
+  Eigen::Matrix<double, 6, 1> body_thrust_ = Eigen::Matrix<double, 6, 1>::Zero();  ///< [N, N m], body frame
 };
 
 }  // namespace cable_dynamics

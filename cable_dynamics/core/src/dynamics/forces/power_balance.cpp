@@ -31,11 +31,13 @@ double endsInputPower(const ChainModel& model, const ChainData& data, const EndI
   double power = base_force.dot(toEigen(exit_velocity)) + data.coupling.dot(data.tip_velocity) +
                  data.clamp_torque.dot(data.clamp_omega) + data.tip_clamp_torque.dot(data.tip_clamp_omega);
   if (ends.winch) power += ends.winch_speed * paidOutEnergyPerLength(model, data, exit_velocity);
+  if (model.body().active) power += data.body.thrust_power;  // after the solve (finishRovBody)
   return power;
 }
 
 double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power) {
-  return data.drag_power + added_mass_power + damperPower(model, data) - data.contact_dissipation;
+  const double body = model.body().active ? data.body.fluid_power : 0.0;  // after the solve (finishRovBody)
+  return data.drag_power + added_mass_power + damperPower(model, data) - data.contact_dissipation + body;
 }
 
 }  // namespace cable_dynamics

@@ -8,6 +8,7 @@
 #include "cable_dynamics/dynamics/forces/coupling.h"
 #include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/link_rates.h"
+#include "cable_dynamics/dynamics/rov_body.h"
 
 namespace cable_dynamics {
 namespace {
@@ -51,9 +52,9 @@ double gammaFor(double rho_infinity) {
 
 }  // namespace
 
-LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity)
-    : gamma_(gammaFor(rho_infinity)), solver_(links) {
-  stage_.setZero(StateLayout::size(links));
+LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity, bool body)
+    : gamma_(gammaFor(rho_infinity)), solver_(links), body_(body) {
+  stage_.setZero(StateLayout::size(links, body));
   for (Eigen::Matrix3Xd* m : {&omega_, &turn1_, &spin1_, &shift1_, &push1_, &rotation_, &translation_}) m->setZero(3, links);
 }
 
@@ -118,8 +119,16 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   const Eigen::Vector3d tip_clamp_rate = data.tip_clamp_omega;
   solver_.addJacobianTimes(model, -gh, 0.0, omega_, clamp_rate, tip_clamp_rate, translation_, tip_rate1);
   solver_.solve(model, data, gh, gh * gh);
+  if (body_) finishRovBody(model.body(), data.tip_known_acc + solver_.tipDelta(), f.data().body);
   const StagePower power1 = stagePower(model, data, start);
   stage_ = x;
+  if (body_) {  // as a link: kw1 = h a1, kphi1 = h (w_n + g kw1), in the body's frame
+    const Eigen::Vector3d omega = x.segment<3>(StateLayout::bodyOmega(n));
+    body_spin1_ = h * data.body.acceleration.tail<3>();
+    body_turn1_ = h * (omega + g * body_spin1_);
+    stage_.segment<4>(StateLayout::bodyAttitude(n)) = turnedAttitude(x.segment<4>(StateLayout::bodyAttitude(n)), body_turn1_);
+    stage_.segment<3>(StateLayout::bodyOmega(n)) = omega + body_spin1_;
+  }
   for (int k = first; k < n; ++k) {
     const StiffLinkTerms& terms = solver_.link(k);
     spin1_.col(k) = h * terms.angular_acc;  // kw1 [rad/s]
@@ -160,6 +169,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   solver_.addJacobianTimes(model, 0.0, 2.0 * g, spin1_, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), push1_,
                            tip_push1);
   solver_.solve(model, data, gh, gh * gh);
+  if (body_) finishRovBody(model.body(), data.tip_known_acc + solver_.tipDelta(), f.data().body);
   StagePower power2 = stagePower(model, data, end);
   if (end.load_coupled) {
     // The coupling's power F.v at x_n + k1 is O(h^2) from the step's end, x_n + (k1 + k~2)/2, and with a
@@ -178,6 +188,14 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     const Eigen::Vector3d omega = x.segment<3>(StateLayout::omega(k));
     turnFrame(x, k, 0.5 * (turn1_.col(k) + turn2));
     x.segment<3>(StateLayout::omega(k)) = omega + 0.5 * (spin1_.col(k) + spin2);
+  }
+  if (body_) {  // rphi2 = h dexp^-1(kphi1) w_1 - 2 g h kw1, kphi~2 = rphi2 + g h kw~2, as the links'
+    const Eigen::Vector3d w1 = stage_.segment<3>(StateLayout::bodyOmega(n));
+    const Eigen::Vector3d spin2 = h * data.body.acceleration.tail<3>();
+    const Eigen::Vector3d turn2 = h * (w1 - 0.5 * body_turn1_.cross(w1)) - 2.0 * g * h * body_spin1_ + gh * spin2;
+    x.segment<4>(StateLayout::bodyAttitude(n)) =
+        turnedAttitude(x.segment<4>(StateLayout::bodyAttitude(n)), 0.5 * (body_turn1_ + turn2));
+    x.segment<3>(StateLayout::bodyOmega(n)) += 0.5 * (body_spin1_ + spin2);
   }
   // The power balance: inputs into work_input, losses into dissipated, each the stages' mean.
   x(StateLayout::workInput(n)) += 0.5 * h * (power1.input + power2.input);

@@ -13,14 +13,14 @@ bool TimeScheme::evaluateEnd(ChainDynamics& dynamics, const EndInputs& ends, con
   return true;
 }
 
-std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity) {
+std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity, bool body) {
   switch (integrator) {
     case Integrator::kRk4:
-      return std::make_unique<Rk4Scheme>(StateLayout::size(links));
+      return std::make_unique<Rk4Scheme>(StateLayout::size(links, body));
     case Integrator::kSemiImplicit:
       return std::make_unique<SemiImplicitScheme>(links);
     case Integrator::kImplicit:
-      return std::make_unique<LinearImplicitScheme>(links, rho_infinity);
+      return std::make_unique<LinearImplicitScheme>(links, rho_infinity, body);
   }
   return nullptr;
 }

@@ -28,7 +28,7 @@ namespace cable_dynamics {
 /// Cost: two evaluations of the loads, one linearization and two recursions per step; no heap allocation.
 class LinearImplicitScheme : public TimeScheme {
  public:
-  LinearImplicitScheme(int links, double rho_infinity);
+  LinearImplicitScheme(int links, double rho_infinity, bool body = false);
 
   bool advance(ChainDynamics& dynamics, const EndConditions& ends, double t, double h, Eigen::VectorXd& x) override;
   /// Its power terms are the two stages' mean (second order), but a step's balance is not closed to the
@@ -55,6 +55,10 @@ class LinearImplicitScheme : public TimeScheme {
   // (3 x n) per link: w_n, then stage 2's rphi [rad/s, then rad]; stage 1's kphi1 [rad], kw1 [rad/s], the base
   // end's displacement [m] and velocity change [m/s]; the stage-2 right-hand side's rotations and translations.
   Eigen::Matrix3Xd omega_, turn1_, spin1_, shift1_, push1_, rotation_, translation_;
+  /// The ROV body (load.mode body) is stepped as a link is: its rotation vector and angular velocity in its
+  /// own frame, with only its inertia in W (its own forces are slow beside the cable's: explicit).
+  bool body_ = false;
+  Eigen::Vector3d body_turn1_ = Eigen::Vector3d::Zero(), body_spin1_ = Eigen::Vector3d::Zero();
 };
 
 }  // namespace cable_dynamics

@@ -38,7 +38,8 @@ class TimeScheme {
   virtual void forget() {}
 };
 
-/// The scheme `integrator` for chains of `links` links (rho_infinity: the implicit scheme's, SimulationParams).
-std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity = 1.0);
+/// The scheme `integrator` for chains of `links` links (rho_infinity: the implicit scheme's, SimulationParams),
+/// with an ROV body on the tip when `body` (load.mode body: the state's last StateLayout::kBody entries).
+std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity = 1.0, bool body = false);
 
 }  // namespace cable_dynamics
