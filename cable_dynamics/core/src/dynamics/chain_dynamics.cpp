@@ -184,10 +184,10 @@ void ChainDynamics::paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& 
 void ChainDynamics::stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const {
   cable_dynamics::stateFromPaper(links(), q, qd, x);
   if (!model_.body().active) return;
-  // An ROV body starts level and at rest: its frame (x forward, z up) is the paper frame turned half a
-  // turn about x (the paper frame has z down), the quaternion (0, 1, 0, 0).
+  // An ROV body starts at rest in its configured attitude (load.body.initial_attitude; level: the
+  // quaternion (0, 1, 0, 0), the half turn about x between its frame, z up, and the paper frame, z down).
   x.conservativeResize(stateSize());
-  x.segment<4>(StateLayout::bodyAttitude(links())) << 0.0, 1.0, 0.0, 0.0;
+  x.segment<4>(StateLayout::bodyAttitude(links())) = model_.body().initial_attitude;
   x.segment<3>(StateLayout::bodyOmega(links())).setZero();
 }
 

@@ -34,15 +34,25 @@ RovBodyConstants RovBodyConstants::make(const LoadParams& load, double fluid_den
   c.center_of_gravity = p.center_of_gravity;
   c.center_of_buoyancy = p.center_of_buoyancy;
   c.attachment = load.attachment;
+  // The paper frame is the world turned half a turn about x: paper from body = P R_world, P = diag(1, -1, -1).
+  const Eigen::Vector3d& rpy = p.initial_attitude;
+  const Eigen::Matrix3d world = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                                 Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                                 Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX())).toRotationMatrix();
+  const Eigen::Quaterniond start(Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal() * world);
+  c.initial_attitude << start.w(), start.x(), start.y(), start.z();
   // M_RB about O (Fossen eq. 3.44): [m I, -m S(r_g); m S(r_g), I_g - m S(r_g)^2].
   const Eigen::Matrix3d sg = skew(p.center_of_gravity);
   c.rigid_mass.topLeftCorner<3, 3>() = load.mass * Eigen::Matrix3d::Identity();
   c.rigid_mass.topRightCorner<3, 3>() = -load.mass * sg;
   c.rigid_mass.bottomLeftCorner<3, 3>() = load.mass * sg;
   c.rigid_mass.bottomRightCorner<3, 3>() = p.inertia - load.mass * sg * sg;
-  c.added_mass = p.added_mass;
-  c.linear_damping = p.linear_damping;
-  c.quadratic_damping = p.quadratic_damping;
+  // The added mass and the damping are the water's: in air (fluid.density 0) the body has neither, as
+  // the links have no drag there.
+  const bool in_water = fluid_density > 0.0;
+  c.added_mass = in_water ? p.added_mass : Matrix6d::Zero();
+  c.linear_damping = in_water ? p.linear_damping : Vector6d::Zero();
+  c.quadratic_damping = in_water ? p.quadratic_damping : Vector6d::Zero();
   c.weight = load.mass * gravity;
   c.buoyancy = fluid_density * load.volume * gravity;
   // About P: M_P = H^T M H, H = [I S(r); 0 I].

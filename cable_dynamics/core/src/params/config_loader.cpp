@@ -122,6 +122,7 @@ RovBodyParams parseRovBody(Section body) {
   b.quadratic_damping = six("quadratic_damping", 0.0, "N s^2/m^2, N m s^2/rad^2");
   b.center_of_gravity = vector3(body, "center_of_gravity", 100.0, "m");
   b.center_of_buoyancy = vector3(body, "center_of_buoyancy", 100.0, "m");
+  b.initial_attitude = vector3(body, "initial_attitude", M_PI, "rad");
   Section keeper = body.sub("station_keeping");
   const auto gains = [&keeper](const char* key, const char* unit) {
     if (!keeper.has(key)) return Eigen::Vector3d::Zero().eval();

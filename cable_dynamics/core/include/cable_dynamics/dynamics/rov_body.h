@@ -41,6 +41,7 @@ struct RovBodyConstants {
   double buoyancy = 0.0;  ///< rho V g [N]
   Eigen::Vector3d center_of_gravity = Eigen::Vector3d::Zero(), center_of_buoyancy = Eigen::Vector3d::Zero();
   Eigen::Vector3d attachment = Eigen::Vector3d::Zero();  ///< P from O [m]
+  Eigen::Vector4d initial_attitude = Eigen::Vector4d(0.0, 1.0, 0.0, 0.0);  ///< paper from body at start (w, x, y, z)
   // About P: M_P = [A B; B^T C]; S = A - B C^-1 B^T [kg], B C^-1 [m^-1 ...], C^-1, B^T.
   Eigen::Matrix3d schur = Eigen::Matrix3d::Zero(), b_c_inverse = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d c_inverse = Eigen::Matrix3d::Zero(), b_transpose = Eigen::Matrix3d::Zero();

@@ -102,6 +102,8 @@ struct RovBodyParams {
   Eigen::Matrix<double, 6, 1> quadratic_damping = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Vector3d center_of_gravity = Eigen::Vector3d::Zero();   ///< from O, body frame [m]
   Eigen::Vector3d center_of_buoyancy = Eigen::Vector3d::Zero();  ///< from O, body frame [m]
+  /// Attitude at start and after a reset: roll, pitch, yaw (world from body, R = Rz(yaw) Ry(pitch) Rx(roll)) [rad].
+  Eigen::Vector3d initial_attitude = Eigen::Vector3d::Zero();
   /// The built-in station keeper (simulation/station_keeper.h): a PD law on the pose error towards the
   /// start pose (or a target set later), its wrench added to the commanded thrust. Off when all gains are 0.
   Eigen::Vector3d position_gain = Eigen::Vector3d::Zero();  ///< world x, y, z [N/m]
