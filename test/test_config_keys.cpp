@@ -52,6 +52,16 @@ fluid: {current: [0.1, 0.0, 0.0]}
 
 /// `a[3].b` -> `a[i].b`; a list row the loader reads through a wrapper (`fluid.current_profile[i].row`,
 /// config_loader.cpp) is the list's own key.
+const char* const kBodyConfig = R"(
+cable: {links: 4, length: 8.0, diameter: 0.03, mass_per_length: 1.0}
+load: {mass: 11.5, volume: 0.0112, mode: body, attachment: [-0.2, 0.0, 0.1],
+       body: {inertia: [0.16, 0.16, 0.16], added_mass: [5.5, 12.7, 14.57, 0.12, 0.12, 0.12],
+              linear_damping: [4.03, 6.22, 5.18, 0.07, 0.07, 0.07], quadratic_damping: [18.18, 21.66, 36.99, 1.55, 1.55, 1.55],
+              center_of_gravity: [0, 0, 0], center_of_buoyancy: [0, 0, 0.02], initial_attitude: [0, 0, 0],
+              station_keeping: {position_gain: [50, 50, 50], velocity_gain: [40, 40, 40], attitude_gain: [0, 0, 5],
+                                rate_gain: [0, 0, 2], max_force: 80.0, max_torque: 10.0}}}
+)";
+
 std::string normalized(const std::string& key) {
   std::string k = std::regex_replace(key, std::regex(R"(\[[0-9]+\])"), "[i]");
   const std::string wrapper = "[i].row";
@@ -64,7 +74,7 @@ std::string normalized(const std::string& key) {
 std::set<std::string> loaderKeys() {
   // One log over both parses: a mapping one config opens (seabed.grid, winch) is a section in both.
   ConfigKeyLog log;
-  for (const char* config : {kWinchConfig, kAttachmentConfig}) loadConfigString(config);
+  for (const char* config : {kWinchConfig, kAttachmentConfig, kBodyConfig}) loadConfigString(config);
   std::set<std::string> keys;
   for (const std::string& k : log.keys()) keys.insert(normalized(k));
   return keys;

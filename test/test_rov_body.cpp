@@ -9,6 +9,7 @@
 //   dampers (conserved) and in water (closed with the losses).
 #include <cmath>
 #include <iostream>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -247,4 +248,42 @@ TEST(RovBodyOnTether, EnergyIsConservedInAirAndBalancedInWater) {
   EXPECT_LT(air, 2e-4);
   EXPECT_GT(std::log2(air / air_half), 3.5);
   EXPECT_LT(water, 5e-7);
+}
+
+TEST(RovBodyInputs, BadBodiesAreRefusedWithTheKey) {
+  const std::string cable = "cable: {links: 3, length: 3.0, diameter: 0.01, mass_per_length: 0.1}\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"load: {mass: 0.0, mode: body}\n", "load.mass"},
+      {"load: {mass: 5.0, mode: body, body: {inertia: [0.1, 0.01, 0.0, 0.0, 0.1, 0.0, 0.0, 0.0, 0.1]}}\n", "load.body.inertia"},
+      {"load: {mass: 5.0, mode: body, body: {inertia: [0.1, -0.1, 0.1]}}\n", "load.body.inertia"},
+      {"load: {mass: 5.0, mode: body, body: {added_mass: [1.0, 1.0, -1.0, 0.1, 0.1, 0.1]}}\n", "load.body.added_mass"},
+      {"load: {mass: 5.0, mode: body, drag_area: 0.1}\n", "load.drag_area"},
+      {"load: {mass: 5.0, mode: body}\nsimulation: {integrator: semi_implicit}\n", "simulation.integrator"},
+      {"load: {mass: 5.0, mode: body, body: {linear_damping: [1, 1, 1, 1, 1, -1]}}\n", "load.body.linear_damping"},
+  };
+  for (const auto& [load, key] : cases) {
+    try {
+      CableSimulator sim(loadConfigString(cable + load));
+      ADD_FAILURE() << "accepted: " << load;
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(e.key().rfind(key, 0), 0u) << e.what();
+      std::cout << "[ refused ] " << e.what() << "\n";
+    }
+  }
+}
+
+TEST(RovBodyInputs, ANonFiniteThrustIsRefusedAndChangesNothing) {
+  CableSimulator sim(loadConfigString(std::string(kSwingingRov) + "fluid: {density: 1025.0}\nsimulation: {dt: 0.0005}\n"));
+  sim.setBodyThrust(Eigen::Vector3d(5.0, 0.0, 0.0), Eigen::Vector3d::Zero());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(sim.setBodyThrust(Eigen::Vector3d(nan, 0.0, 0.0), Eigen::Vector3d::Zero()), std::invalid_argument);
+  EXPECT_THROW(sim.setBodyThrust(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 1e300, 0.0)), std::invalid_argument);
+  for (int i = 0; i < 200; ++i) ASSERT_TRUE(sim.step().ok);
+  SimulationSnapshot s;
+  sim.snapshot(s);
+  EXPECT_EQ(s.rov_thrust(0), 5.0);  // the last accepted thrust holds
+  EXPECT_TRUE(s.rov_thrust.allFinite() && s.chain.load_force.allFinite() && s.rov_velocity.allFinite());
+  // Without a body the body's inputs are refused.
+  CableSimulator plain(loadConfigString("cable: {links: 3, length: 3.0, diameter: 0.01, mass_per_length: 0.1}\n"));
+  EXPECT_THROW(plain.setBodyThrust(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), std::invalid_argument);
 }

@@ -91,11 +91,13 @@ MotionParams parseMotion(Section motion) {
   return m;
 }
 
-/// A square matrix given whole (size^2 numbers, row by row) or by its diagonal (size numbers).
+/// A square matrix given whole (size^2 numbers, row by row) or by its diagonal (size numbers); `fallback`
+/// when absent.
 template <int Size>
-Eigen::Matrix<double, Size, Size> squareMatrix(Section& s, const std::string& key, double limit, const char* unit) {
+Eigen::Matrix<double, Size, Size> squareMatrix(Section& s, const std::string& key, double limit, const char* unit,
+                                               const Eigen::Matrix<double, Size, Size>& fallback) {
+  if (!s.has(key)) return fallback;
   Eigen::Matrix<double, Size, Size> m = Eigen::Matrix<double, Size, Size>::Zero();
-  if (!s.has(key)) return m;
   const bool whole = s.raw(key).IsSequence() && s.raw(key).size() == static_cast<std::size_t>(Size * Size);
   const std::vector<double> v = s.numberList(key, whole ? Size * Size : Size, -limit, limit, false, unit);
   for (int r = 0; r < Size; ++r) {
@@ -109,8 +111,8 @@ Eigen::Matrix<double, Size, Size> squareMatrix(Section& s, const std::string& ke
 /// Symmetry and definiteness are the gate's (input_gate.cpp), which names the key.
 RovBodyParams parseRovBody(Section body) {
   RovBodyParams b;
-  b.inertia = squareMatrix<3>(body, "inertia", 1e9, "kg m^2");
-  b.added_mass = squareMatrix<6>(body, "added_mass", 1e9, "kg, kg m, kg m^2");
+  b.inertia = squareMatrix<3>(body, "inertia", 1e9, "kg m^2", b.inertia);
+  b.added_mass = squareMatrix<6>(body, "added_mass", 1e9, "kg, kg m, kg m^2", b.added_mass);
   const auto six = [&body](const char* key, double lo, const char* unit) {
     Eigen::Matrix<double, 6, 1> v = Eigen::Matrix<double, 6, 1>::Zero();
     if (!body.has(key)) return v;
