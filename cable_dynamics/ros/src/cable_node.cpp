@@ -30,7 +30,10 @@ constexpr double kSteppingShare = 0.8;
 constexpr double kLogPeriod = 5.0;
 
 const char* loadModeName(LoadMode mode) {
-  return mode == LoadMode::kFree ? "free" : mode == LoadMode::kAnchored ? "anchored" : "attached";
+  return mode == LoadMode::kFree       ? "free"
+         : mode == LoadMode::kAnchored ? "anchored"
+         : mode == LoadMode::kAttached ? "attached"
+                                       : "body";
 }
 
 }  // namespace
@@ -108,6 +111,12 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     seabed_pub_.publish(seabedMarker(params_, options_.world_frame, options_.base_position));
     contact_pub_ = nh_.advertise<visualization_msgs::Marker>("seabed_contact_marker", 2);
     contact_marker_ = contactMarker(params_, options_.world_frame);
+  }
+  if (params_.load.mode == LoadMode::kBody) {
+    // The ROV is simulated here: thrust (body frame) and the station keeper's target in, odometry out.
+    odom_pub_.advertise(nh_, "rov_odom", 10);
+    thrust_sub_ = nh_.subscribe("rov_thrust", kInputQueueSize, &CableNode::onRovThrust, this);
+    target_sub_ = nh_.subscribe("rov_target", kInputQueueSize, &CableNode::onRovTarget, this);
   }
   diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 5);
   rov_sub_ = nh_.subscribe("rov_pose", kInputQueueSize, &CableNode::onRovPose, this);
@@ -306,8 +315,43 @@ void CableNode::recoverFromDivergence(const std::string& why) {
 
 void CableNode::restartClock() { clock_.anchor(ros::Time::now(), sim_->time()); }
 
+void CableNode::onRovThrust(const geometry_msgs::WrenchStamped::ConstPtr& msg) {
+  Eigen::Vector3d force, torque;
+  std::string why;
+  if (!readThrust(*msg, names_.rov(), force, torque, why)) {
+    ++thrust_rejected_;
+    ROS_WARN_STREAM_THROTTLE(kLogPeriod, "cable_dynamics: rov_thrust rejected (" << thrust_rejected_ << " so far): " << why);
+    return;
+  }
+  sim_->setBodyThrust(force, torque);
+  last_thrust_ = ros::Time::now();
+  thrust_held_ = true;
+}
+
+void CableNode::onRovTarget(const geometry_msgs::PoseStamped::ConstPtr& msg) {
+  Eigen::Vector3d position;
+  Eigen::Quaterniond attitude;
+  std::string why;
+  if (!readBodyTarget(*msg, options_.world_frame, options_.base_position, position, attitude, why)) {
+    ++target_rejected_;
+    ROS_WARN_STREAM_THROTTLE(kLogPeriod, "cable_dynamics: rov_target rejected (" << target_rejected_ << " so far): " << why);
+    return;
+  }
+  sim_->setBodyTarget(position, attitude);
+}
+
+void CableNode::dropStaleThrust(const ros::Time& now) {
+  if (!thrust_held_ || std::abs((now - last_thrust_).toSec()) <= options_.input_timeout) return;
+  sim_->setBodyThrust(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  thrust_held_ = false;
+  ++thrust_stale_;
+  ROS_WARN_STREAM("cable_dynamics: rov_thrust silent for more than ros.input_timeout = " << options_.input_timeout
+                  << " s: thrust set to zero (" << thrust_stale_ << " times so far)");
+}
+
 void CableNode::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
+  if (params_.load.mode == LoadMode::kBody) dropStaleThrust(now);
   const ros::WallTime wall_start = ros::WallTime::now();
   if (!clock_.anchored() || now < last_now_) {  // first cycle, or the clock jumped back (/clock restarted)
     clock_.anchor(now, sim_->time());
@@ -387,7 +431,14 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   const bool attached = params_.load.mode == LoadMode::kAttached;
   if (attached) fillCouplingPort(source_.snapshot.port, options_.base_position, stamp, port_msg_);
   // Never a non-finite number out, even one derived from a finite state (an overflowing arrow).
-  if (!allFinite(outputs_) || (attached && !allFinite(port_msg_))) {
+  const bool body = params_.load.mode == LoadMode::kBody;
+  if (body) fillRovOdometry(source_.snapshot, options_.base_position, stamp, options_.world_frame, names_.rov(), odom_msg_);
+  const bool odom_finite = !body || (std::isfinite(odom_msg_.pose.pose.position.x + odom_msg_.pose.pose.position.y +
+                                                   odom_msg_.pose.pose.position.z + odom_msg_.twist.twist.linear.x +
+                                                   odom_msg_.twist.twist.linear.y + odom_msg_.twist.twist.linear.z +
+                                                   odom_msg_.twist.twist.angular.x + odom_msg_.twist.twist.angular.y +
+                                                   odom_msg_.twist.twist.angular.z + odom_msg_.pose.pose.orientation.w));
+  if (!allFinite(outputs_) || (attached && !allFinite(port_msg_)) || !odom_finite) {
     recoverFromDivergence("non-finite output at t = " + std::to_string(sim_->time()) + " s (nothing published)");
     return;
   }
@@ -405,6 +456,7 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   base_wrench_pub_.publish(outputs_.base_wrench);
   base_wrench_world_pub_.publish(outputs_.base_wrench_world);
   if (attached) port_pub_.publish(port_msg_);
+  if (body) odom_pub_.publish(odom_msg_);
   last_stamp_ = stamp;
 }
 
@@ -416,6 +468,7 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
   }
   try {
     if (sizer_) sizer_->forgetStream();  // the exchange is measured afresh (the size in force stays)
+    thrust_held_ = false;                // a reset zeroes the ROV body's commanded thrust
     if (req.positions.empty()) {
       sim_->reset();
     } else {

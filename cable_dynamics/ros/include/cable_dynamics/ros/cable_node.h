@@ -21,6 +21,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "cable_dynamics/ros/coupling_sizer.h"
+#include "cable_dynamics/ros/rov_body_io.h"
 #include "cable_dynamics/ros/input_guard.h"
 #include "cable_dynamics/ros/live_tuning.h"
 #include "cable_dynamics/ros/message_builders.h"
@@ -98,6 +99,17 @@ class CableNode {
   ros::Publisher seabed_pub_, contact_pub_;  ///< with a seabed: the bottom (latched), the links on it
   visualization_msgs::Marker contact_marker_;
   ros::Subscriber rov_sub_, base_sub_, current_sub_, winch_sub_;
+  // An ROV body simulated here (load.mode body): thrust and station-keeping target in, odometry out.
+  ros::Subscriber thrust_sub_, target_sub_;
+  SharedPublisher<nav_msgs::Odometry> odom_pub_;
+  nav_msgs::Odometry odom_msg_;
+  ros::Time last_thrust_;        ///< the last accepted rov_thrust; zero before the first
+  bool thrust_held_ = false;     ///< a commanded thrust is in force (zeroed when its stream goes stale)
+  unsigned long thrust_rejected_ = 0, thrust_stale_ = 0, target_rejected_ = 0;
+  void onRovThrust(const geometry_msgs::WrenchStamped::ConstPtr& msg);
+  void onRovTarget(const geometry_msgs::PoseStamped::ConstPtr& msg);
+  /// A thrust stream silent for ros.input_timeout: its thrust is dropped (thrusters off), counted once.
+  void dropStaleThrust(const ros::Time& now);
   ros::ServiceServer reset_srv_, equilibrium_srv_, model_srv_, pause_srv_, winch_srv_;
   ros::Timer timer_;
 
