@@ -249,6 +249,10 @@ void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   if (params_.load.mode == LoadMode::kFree) {
     ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is free: the pose is ignored (use attached)");
   }
+  if (params_.load.mode == LoadMode::kBody) {
+    ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is body: the ROV is simulated here and the "
+                  "pose is ignored (rov_target moves its station keeper's target)");
+  }
 }
 
 void CableNode::applyCouplingSize() {

@@ -152,6 +152,12 @@ double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs
   return solvedMechanicalEnergy(x, magnitude);
 }
 
+void ChainDynamics::computeBodyPose(const Eigen::VectorXd& x, const EndInputs& ends) {
+  applyEnds(ends);
+  computeKinematics(model_, data_, x, ends);
+  computeBodyTerms(x, ends);
+}
+
 double ChainDynamics::solvedMechanicalEnergy(const Eigen::VectorXd& x, double& magnitude) {
   double kinetic = 0.0, potential = 0.0;
   kineticAndPotentialEnergy(model_, data_, kinetic, potential);

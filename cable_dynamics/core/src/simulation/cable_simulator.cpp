@@ -70,8 +70,7 @@ Eigen::Matrix3d paperToWorldRotation(const Eigen::Matrix3d& paper) {
 BodyPose CableSimulator::bodyPose() {
   BodyPose pose;
   if (!hasBody()) return pose;
-  double magnitude = 0.0;
-  dynamics_.mechanicalEnergy(x_, ends_.at(time_), magnitude);  // the kinematics and the body's terms at x
+  dynamics_.computeBodyPose(x_, ends_.at(time_));
   const ChainData& data = dynamics_.data();
   const RovBodyTerms& body = data.body;
   pose.position = paperToWorld(rovBodyOrigin(dynamics_.model().body(), body.rotation, data.tip_position));
@@ -106,7 +105,7 @@ void CableSimulator::updateBodyThrust() {
   if (thrust == applied_thrust_) return;
   applied_thrust_ = thrust;
   ends_.setBodyThrust(thrust);
-  scheme_->forget();  // RK4's first stage was evaluated under the old thrust
+  scheme_->forgetRates();  // RK4's first stage was evaluated under the old thrust
 }
 
 StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) {

@@ -85,6 +85,9 @@ class ChainDynamics {
   /// Kinetic + potential + elastic + seabed contact energy at x [J] without solving for the
   /// accelerations (O(n)). `magnitude` gets the sum of the terms' absolute values [J].
   double mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude);
+  /// The kinematics and the ROV body's terms at x (data().tip_*, data().body), nothing else: what the
+  /// body's pose and twist are read from. O(n), no allocation.
+  void computeBodyPose(const Eigen::VectorXd& x, const EndInputs& ends);
   /// mechanicalEnergy() of the state x that the last derivative() or evaluate() call was given, from
   /// the kinematics that call left (no second pass over the chain).
   double solvedMechanicalEnergy(const Eigen::VectorXd& x, double& magnitude);

@@ -38,6 +38,8 @@ class LinearImplicitScheme : public TimeScheme {
   /// The next first stage linearizes afresh (its geometric stiffness from the external loads) instead of
   /// reusing the last second stage's Jacobians (a reset or a changed input).
   void forget() override { tensions_known_ = false; }
+  /// Its stages evaluate the rates afresh every step; the Jacobian it reuses does not read the thrust.
+  void forgetRates() override {}
 
  private:
   /// A stage's powers [W]: what the base (and a winch's paid-out cable), the coupling and turning clamps put

@@ -36,6 +36,9 @@ class TimeScheme {
 
   /// An input changed or a step was discarded: nothing evaluated earlier may be reused.
   virtual void forget() {}
+  /// An input that enters the rates but not their Jacobian changed (an ROV body's thrust): the rates
+  /// evaluated earlier may not be reused (RK4's first stage), a Jacobian may.
+  virtual void forgetRates() { forget(); }
 };
 
 /// The scheme `integrator` for chains of `links` links (rho_infinity: the implicit scheme's, SimulationParams),
