@@ -87,8 +87,10 @@ class RovBody:
     """The ROV's state and dynamics (no ROS): position p (world, z up) [m], attitude q [x, y, z, w] (world
     from body), body velocities v [m/s] and w [rad/s]; a PID station keeper towards `target`."""
 
-    def __init__(self, params, position, target=None, gains=None):
+    def __init__(self, params, position, target=None, gains=None, current=None):
         self.p = np.array(position, dtype=float)
+        # The water's velocity (world axes) [m/s]: the damping acts on the velocity relative to it.
+        self.current = np.zeros(3) if current is None else np.array(current, dtype=float)
         self.q = np.array([0.0, 0.0, 0.0, 1.0])
         self.v = np.zeros(3)
         self.w = np.zeros(3)
@@ -147,7 +149,8 @@ class RovBody:
         f_thr, t_thr = self.thrust(dt)
         f_g, t_g = self.restoring()
         nu = np.concatenate([self.v, self.w])
-        damping = (self.Dl + self.Dq * np.abs(nu)) * nu
+        relative = nu - np.concatenate([quat_to_matrix(self.q).T @ self.current, np.zeros(3)])
+        damping = (self.Dl + self.Dq * np.abs(relative)) * relative
         coriolis = np.concatenate([self.m * np.cross(self.w, self.v), np.cross(self.w, self.inertia * self.w)])
         tau = np.concatenate([f_thr + f_g + cable_force_body, t_thr + t_g + cable_torque_body])
         nu = nu + dt * (tau - damping - coriolis) / self.M

@@ -103,6 +103,9 @@ cable_add_pytest(python_bindings test/test_python_bindings.py
   CABLE_MODEL_BIN=$<TARGET_FILE:cable_model> CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>
   CABLE_DEVEL_SETUP=${CATKIN_DEVEL_PREFIX}/setup.bash)
 add_dependencies(run_tests_cable_dynamics_pytest_python_bindings cable_model cable_sim cable_dynamics_python)
+# Issue 26: load.mode body against the same ROV written apart (scripts/simple_rov.py) in a 1 ms lockstep.
+cable_add_pytest(body_vs_lockstep test/test_body_vs_lockstep.py)
+add_dependencies(run_tests_cable_dynamics_pytest_body_vs_lockstep cable_dynamics_python)
 cable_add_pytest(unreliable_runs test/test_unreliable_runs.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
 add_dependencies(run_tests_cable_dynamics_pytest_unreliable_runs cable_sim)
 cable_add_pytest(beam_catenary test/test_beam_catenary.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)

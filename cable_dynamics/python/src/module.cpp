@@ -126,6 +126,21 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
            "attitude (quaternion x, y, z, w); load.mode anchored or attached.")
       .def("set_base_target", &PythonSimulator::setBaseTarget, "position"_a, "velocity"_a = kZero,
            "attitude"_a = kIdentity, "The vessel's hang-off point, velocity and attitude, as set_load_target.")
+      .def("set_body_thrust", &PythonSimulator::setBodyThrust, "force"_a, "torque"_a = kZero,
+           "The ROV body's thrust at its origin, in its frame [N], [N m] (load.mode body); held until the next call.")
+      .def("set_body_target", &PythonSimulator::setBodyTarget, "position"_a, "attitude"_a = kIdentity,
+           "The station keeper's target: the ROV's origin [m] (world axes from the base's rest position) and "
+           "attitude (quaternion x, y, z, w); load.mode body.")
+      .def(
+          "body_pose",
+          [](PythonSimulator& s) {
+            const BodyPose p = s.bodyPose();
+            const Eigen::Vector4d xyzw(p.attitude.x(), p.attitude.y(), p.attitude.z(), p.attitude.w());
+            return py::dict("position"_a = p.position, "attitude"_a = xyzw, "velocity"_a = p.velocity,
+                            "angular_velocity"_a = p.angular_velocity);
+          },
+          "The ROV body's origin [m], attitude (x, y, z, w), velocity (world axes) [m/s] and angular velocity "
+          "(its frame) [rad/s] (load.mode body).")
       .def("command_winch_speed", &PythonSimulator::commandWinchSpeed, "speed"_a,
            "Winch speed [m/s], + pays out, |speed| <= winch.max_speed.")
       .def("command_winch_length", &PythonSimulator::commandWinchLength, "length"_a,

@@ -118,6 +118,10 @@ void PythonSimulator::setBaseTarget(const Eigen::Vector3d& position, const Eigen
   sim_.setBaseTarget(position, velocity, attitude("attitude", xyzw));
 }
 
+void PythonSimulator::setBodyTarget(const Eigen::Vector3d& position, const Eigen::Vector4d& xyzw) {
+  sim_.setBodyTarget(position, attitude("attitude", xyzw));
+}
+
 void PythonSimulator::commandWinchSpeed(double speed) { sim_.commandWinchSpeed(speed); }
 
 void PythonSimulator::commandWinchLength(double length) { sim_.commandWinchLength(length); }

@@ -85,6 +85,12 @@ class PythonSimulator {
   /// The ROV's attachment point (load modes anchored / attached), world axes from the base's rest position
   /// [m], its velocity [m/s], the ROV's attitude as a unit quaternion (x, y, z, w; normalized here).
   void setLoadTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, const Eigen::Vector4d& xyzw);
+  /// The ROV body's commanded thrust at its origin, body frame [N, N m] (load.mode body).
+  void setBodyThrust(const Eigen::Vector3d& force, const Eigen::Vector3d& torque) { sim_.setBodyThrust(force, torque); }
+  /// The station keeper's target: the ROV's origin [m] and attitude (x, y, z, w), world axes.
+  void setBodyTarget(const Eigen::Vector3d& position, const Eigen::Vector4d& xyzw);
+  /// The ROV body's pose and twist now (world axes; angular velocity in its frame).
+  BodyPose bodyPose() { return sim_.bodyPose(); }
   /// The vessel's hang-off point, as setLoadTarget.
   void setBaseTarget(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, const Eigen::Vector4d& xyzw);
   /// Winch speed [m/s], + pays out; |speed| <= winch.max_speed (refused beyond, not clamped, like the node).
