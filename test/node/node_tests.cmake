@@ -15,10 +15,12 @@ add_rostest(test/seabed.test DEPENDENCIES cable_dynamics_node)
 # rostest finds the Python test nodes of this package in the devel space through these links.
 # The rviz scene: the cable's cylinders, the bodies' shapes, the interactive marker driving the ROV.
 add_rostest(test/scene.test DEPENDENCIES cable_dynamics_node)
-# Issue 26: a light ROV exchanging poses and wrenches with the node, against a lockstep run.
-add_rostest(test/rov_client.test DEPENDENCIES cable_dynamics_node)
+# Issue 26: a light ROV exchanging poses and wrenches with the node, against the same case in the body mode;
+# the node with the ROV simulated here (load.mode body).
+add_rostest(test/rov_client.test DEPENDENCIES cable_dynamics_node cable_dynamics_python)
+add_rostest(test/body_mode.test DEPENDENCIES cable_dynamics_node)
 foreach(script test_bad_config.py test_sim_time.py test_log_flood.py test_launch_file.py test_catch_up.py
-    test_scene.py test_seabed_node.py test_rov_client.py)
+    test_scene.py test_seabed_node.py test_rov_client.py test_body_mode_node.py)
   execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
 endforeach()

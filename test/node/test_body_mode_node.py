@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""The node with an ROV simulated here (test/body_mode.test: config/bluerov2_tether.yaml, load.mode body, the
+station keeper holding the start pose). rov_odom comes in the world frame with the ROV's frame as child and
+finite numbers; with the station keeper's target moved 2 m forward by rov_target, the ROV moves forward and
+settles near it; a forward rov_thrust on top pushes it further than the keeper alone; a thrust with a NaN
+and one in a foreign frame are rejected (the ROV and every output stay finite); a thrust stream that stops
+is dropped after ros.input_timeout, and the ROV returns towards the keeper's target."""
+import math
+import time
+import unittest
+
+import rospy
+import rosunit
+from geometry_msgs.msg import PoseStamped, WrenchStamped
+from nav_msgs.msg import Odometry
+
+NS = "/body_mode/"
+
+
+def finite(odom):
+    p, q, v, w = odom.pose.pose.position, odom.pose.pose.orientation, odom.twist.twist.linear, odom.twist.twist.angular
+    return all(math.isfinite(x) for x in (p.x, p.y, p.z, q.x, q.y, q.z, q.w, v.x, v.y, v.z, w.x, w.y, w.z))
+
+
+class BodyModeNode(unittest.TestCase):
+    def setUp(self):
+        self.odoms = []
+        rospy.Subscriber(NS + "rov_odom", Odometry, self.odoms.append)
+        self.thrust = rospy.Publisher(NS + "rov_thrust", WrenchStamped, queue_size=10)
+        self.target = rospy.Publisher(NS + "rov_target", PoseStamped, queue_size=10)
+        deadline = time.time() + 30.0
+        while not self.odoms and time.time() < deadline:
+            time.sleep(0.1)
+        self.assertTrue(self.odoms, "no rov_odom within 30 s")
+
+    def x(self):
+        return self.odoms[-1].pose.pose.position.x
+
+    def publish_thrust(self, force_x, seconds, frame="", nan=False):
+        msg = WrenchStamped()
+        msg.header.frame_id = frame
+        msg.wrench.force.x = float("nan") if nan else force_x
+        end = time.time() + seconds
+        while time.time() < end:
+            msg.header.stamp = rospy.Time.now()
+            self.thrust.publish(msg)
+            time.sleep(0.05)
+
+    def test_odometry_target_thrust_and_bad_thrust(self):
+        first = self.odoms[-1]
+        self.assertEqual(first.header.frame_id, "world")
+        self.assertEqual(first.child_frame_id, "body_mode/rov")
+        start = self.x()
+        # The station keeper's target 2 m forward (world x): the ROV follows it.
+        target = PoseStamped()
+        target.header.frame_id = "world"
+        target.pose.position.x = start + 2.0
+        target.pose.position.y = first.pose.pose.position.y
+        target.pose.position.z = first.pose.pose.position.z
+        target.pose.orientation = first.pose.pose.orientation
+        for _ in range(5):
+            self.target.publish(target)
+            time.sleep(0.1)
+        time.sleep(15.0)
+        moved = self.x() - start
+        print(f"\nstation moved 2 m: the ROV moved {moved:.3f} m in 15 s", flush=True)
+        self.assertGreater(moved, 1.0)
+        self.assertLess(moved, 3.0)
+        # A forward thrust of 30 N on top: further forward than the keeper alone holds it.
+        held = self.x()
+        self.publish_thrust(30.0, 6.0)
+        pushed = self.x() - held
+        print(f"30 N forward for 6 s: {pushed:+.3f} m beyond the keeper's hold", flush=True)
+        self.assertGreater(pushed, 0.1)
+        # Rejected: a NaN, a foreign frame. Every output stays finite.
+        self.publish_thrust(0.0, 1.0, nan=True)
+        self.publish_thrust(100.0, 1.0, frame="not_the_rov")
+        self.assertTrue(all(finite(o) for o in self.odoms))
+        # The stream stopped: its thrust is dropped after ros.input_timeout (1 s) and the keeper brings the
+        # ROV back towards its target.
+        before = self.x()
+        time.sleep(8.0)
+        back = before - self.x()
+        print(f"thrust stream stopped: the ROV came back {back:+.3f} m in 8 s", flush=True)
+        self.assertGreater(back, 0.05)
+        self.assertTrue(all(finite(o) for o in self.odoms))
+
+
+if __name__ == "__main__":
+    rospy.init_node("test_body_mode_node", anonymous=True)
+    rosunit.unitrun("cable_dynamics", "body_mode_node", BodyModeNode)
