@@ -58,7 +58,7 @@ load: {mass: 11.5, volume: 0.0112, mode: body, attachment: [-0.2, 0.0, 0.1],
        body: {inertia: [0.16, 0.16, 0.16], added_mass: [5.5, 12.7, 14.57, 0.12, 0.12, 0.12],
               linear_damping: [4.03, 6.22, 5.18, 0.07, 0.07, 0.07], quadratic_damping: [18.18, 21.66, 36.99, 1.55, 1.55, 1.55],
               center_of_gravity: [0, 0, 0], center_of_buoyancy: [0, 0, 0.02], initial_attitude: [0, 0, 0],
-              station_keeping: {position_gain: [50, 50, 50], velocity_gain: [40, 40, 40], attitude_gain: [0, 0, 5],
+              station_keeping: {position_gain: [50, 50, 50], velocity_gain: [40, 40, 40], integral_gain: [10, 10, 10], attitude_gain: [0, 0, 5],
                                 rate_gain: [0, 0, 2], max_force: 80.0, max_torque: 10.0}}}
 )";
 

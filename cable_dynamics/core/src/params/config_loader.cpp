@@ -133,6 +133,7 @@ RovBodyParams parseRovBody(Section body) {
   };
   b.position_gain = gains("position_gain", "N/m");
   b.velocity_gain = gains("velocity_gain", "N s/m");
+  b.integral_gain = gains("integral_gain", "N/(m s)");
   b.attitude_gain = gains("attitude_gain", "N m/rad");
   b.rate_gain = gains("rate_gain", "N m s/rad");
   b.max_force = keeper.number("max_force", 1e300, 0.0, 1e300, false, "N");

@@ -53,6 +53,7 @@ void CableSimulator::reset() {
   }
   commanded_thrust_.setZero();
   applied_thrust_.setZero();
+  keeper_integral_.setZero();
   if (hasBody()) {  // the station keeper holds the start pose until told otherwise
     const BodyPose pose = bodyPose();
     body_target_position_ = pose.position;
@@ -100,7 +101,8 @@ void CableSimulator::updateBodyThrust() {
   const RovBodyParams& keeper = params_.load.body;
   if (stationKeepingEnabled(keeper)) {
     const double submerged_weight = (params_.load.mass - params_.fluid.density * params_.load.volume) * params_.gravity;
-    thrust += stationKeepingWrench(keeper, submerged_weight, bodyPose(), body_target_position_, body_target_attitude_);
+    thrust += stationKeepingWrench(keeper, submerged_weight, bodyPose(), body_target_position_, body_target_attitude_,
+                                   dt_, keeper_integral_);
   }
   if (thrust == applied_thrust_) return;
   applied_thrust_ = thrust;

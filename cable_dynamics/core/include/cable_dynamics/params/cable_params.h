@@ -108,6 +108,7 @@ struct RovBodyParams {
   /// start pose (or a target set later), its wrench added to the commanded thrust. Off when all gains are 0.
   Eigen::Vector3d position_gain = Eigen::Vector3d::Zero();  ///< world x, y, z [N/m]
   Eigen::Vector3d velocity_gain = Eigen::Vector3d::Zero();  ///< world x, y, z [N s/m]
+  Eigen::Vector3d integral_gain = Eigen::Vector3d::Zero();  ///< world x, y, z, on the position error's integral [N/(m s)]
   Eigen::Vector3d attitude_gain = Eigen::Vector3d::Zero();  ///< body roll, pitch, yaw [N m/rad]
   Eigen::Vector3d rate_gain = Eigen::Vector3d::Zero();      ///< body roll, pitch, yaw [N m s/rad]
   double max_force = 1e300;   ///< the station keeper's force saturates at this norm [N]

@@ -266,6 +266,7 @@ class CableSimulator {
   Eigen::Matrix<double, 6, 1> applied_thrust_ = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Vector3d body_target_position_ = Eigen::Vector3d::Zero();
   Eigen::Quaterniond body_target_attitude_ = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d keeper_integral_ = Eigen::Vector3d::Zero();  ///< the station keeper's position integral [m s]
 };
 
 }  // namespace cable_dynamics

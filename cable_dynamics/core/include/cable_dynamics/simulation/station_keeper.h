@@ -20,13 +20,16 @@ struct BodyPose {
 };
 
 /// The keeper's wrench at O in the body frame [N, N m]:
-///   F = R^T sat(Kp (p_t - p) - Kd v - (W - B) z_world, max_force),
+///   F = R^T sat(Kp e + Ki integral(e) - Kd v + (W - B) z_world, max_force),  e = p_t - p,
 ///   M = sat(Ka log(R^T R_t) - Kr w, max_torque),
 /// the submerged weight W - B fed forward (a trimmed ROV's thrusters hold it), each gain per axis (world
-/// x, y, z for the force; body roll, pitch, yaw for the moment). Zero when every gain is zero.
+/// x, y, z for the force; body roll, pitch, yaw for the moment). `integral` [m s] is the keeper's state:
+/// it gains e dt, and stops growing on an axis whose integral force alone reaches max_force (anti-windup).
+/// Zero when every gain is zero.
 Eigen::Matrix<double, 6, 1> stationKeepingWrench(const RovBodyParams& keeper, double submerged_weight,
                                                  const BodyPose& body, const Eigen::Vector3d& target_position,
-                                                 const Eigen::Quaterniond& target_attitude);
+                                                 const Eigen::Quaterniond& target_attitude, double dt,
+                                                 Eigen::Vector3d& integral);
 
 /// true when some gain of the keeper is non-zero.
 bool stationKeepingEnabled(const RovBodyParams& keeper);
