@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <tf2_eigen/tf2_eigen.h>
+
 #include "cable_dynamics/params/format_values.h"
 #include "cable_dynamics/params/input_gate.h"
 
@@ -12,21 +14,11 @@ void fillRovOdometry(const SimulationSnapshot& s, const Eigen::Vector3d& base_po
   out.header.stamp = stamp;
   out.header.frame_id = world_frame;
   out.child_frame_id = rov_frame;
-  const Eigen::Vector3d p = s.rov_origin + base_position;
-  out.pose.pose.position.x = p.x();
-  out.pose.pose.position.y = p.y();
-  out.pose.pose.position.z = p.z();
-  out.pose.pose.orientation.x = s.rov_attitude.x();
-  out.pose.pose.orientation.y = s.rov_attitude.y();
-  out.pose.pose.orientation.z = s.rov_attitude.z();
-  out.pose.pose.orientation.w = s.rov_attitude.w();
-  const Eigen::Vector3d v = s.rov_attitude.conjugate() * s.rov_velocity;  // the twist in the ROV's frame
-  out.twist.twist.linear.x = v.x();
-  out.twist.twist.linear.y = v.y();
-  out.twist.twist.linear.z = v.z();
-  out.twist.twist.angular.x = s.rov_angular_velocity.x();
-  out.twist.twist.angular.y = s.rov_angular_velocity.y();
-  out.twist.twist.angular.z = s.rov_angular_velocity.z();
+  out.pose.pose.position = tf2::toMsg(Eigen::Vector3d(s.rov_origin + base_position));
+  out.pose.pose.orientation = tf2::toMsg(s.rov_attitude);
+  // The twist in the ROV's frame (REP-105's child frame).
+  tf2::toMsg(Eigen::Vector3d(s.rov_attitude.conjugate() * s.rov_velocity), out.twist.twist.linear);
+  tf2::toMsg(s.rov_angular_velocity, out.twist.twist.angular);
 }
 
 bool readThrust(const geometry_msgs::WrenchStamped& msg, const std::string& rov_frame, Eigen::Vector3d& force,

@@ -4,15 +4,10 @@
 
 #include <Eigen/Cholesky>
 
+#include "cable_dynamics/dynamics/frames.h"
+
 namespace cable_dynamics {
 namespace {
-
-/// The cross-product matrix S(a): S(a) b = a x b.
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d s;
-  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return s;
-}
 
 /// C(nu) nu of a symmetric 6x6 mass matrix M (Fossen eq. 6.43): (w x p1, v x p1 + w x p2), p = M nu.
 Vector6d coriolisTimes(const Matrix6d& m, const Vector6d& nu) {
@@ -42,7 +37,7 @@ RovBodyConstants RovBodyConstants::make(const LoadParams& load, double fluid_den
   const Eigen::Quaterniond start(Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal() * world);
   c.initial_attitude << start.w(), start.x(), start.y(), start.z();
   // M_RB about O (Fossen eq. 3.44): [m I, -m S(r_g); m S(r_g), I_g - m S(r_g)^2].
-  const Eigen::Matrix3d sg = skew(p.center_of_gravity);
+  const Eigen::Matrix3d sg = crossMatrix(p.center_of_gravity);
   c.rigid_mass.topLeftCorner<3, 3>() = load.mass * Eigen::Matrix3d::Identity();
   c.rigid_mass.topRightCorner<3, 3>() = -load.mass * sg;
   c.rigid_mass.bottomLeftCorner<3, 3>() = load.mass * sg;
@@ -57,7 +52,7 @@ RovBodyConstants RovBodyConstants::make(const LoadParams& load, double fluid_den
   c.buoyancy = fluid_density * load.volume * gravity;
   // About P: M_P = H^T M H, H = [I S(r); 0 I].
   Matrix6d h = Matrix6d::Identity();
-  h.topRightCorner<3, 3>() = skew(load.attachment);
+  h.topRightCorner<3, 3>() = crossMatrix(load.attachment);
   const Matrix6d mp = h.transpose() * (c.rigid_mass + c.added_mass) * h;
   const Eigen::Matrix3d a = mp.topLeftCorner<3, 3>(), b = mp.topRightCorner<3, 3>(), cc = mp.bottomRightCorner<3, 3>();
   c.c_inverse = cc.llt().solve(Eigen::Matrix3d::Identity());

@@ -2,17 +2,9 @@
 
 #include <cmath>
 
+#include "cable_dynamics/dynamics/frames.h"
+
 namespace cable_dynamics {
-namespace {
-
-/// [a]x, the cross-product matrix: d/dq of a rotation by q about the unit axis a is [a]x R.
-Eigen::Matrix3d cross(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d k;
-  k << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return k;
-}
-
-}  // namespace
 
 void attitudeAt(const MotionParams& m, double t, Eigen::Matrix3d& rotation, Eigen::Matrix3d& rate,
                 Eigen::Matrix3d& acceleration) {
@@ -26,8 +18,9 @@ void attitudeAt(const MotionParams& m, double t, Eigen::Matrix3d& rotation, Eige
   }
   // R = A B C with A = Rz(yaw), B = Ry(pitch), C = Rx(roll); each factor's derivative is K X, K the
   // cross-product matrix of its axis, and its second derivative K^2 X.
-  const Eigen::Matrix3d kx = cross(Eigen::Vector3d::UnitX()), ky = cross(Eigen::Vector3d::UnitY()),
-                        kz = cross(Eigen::Vector3d::UnitZ());
+  // d/dq of a rotation by q about the unit axis a is [a]x R.
+  const Eigen::Matrix3d kx = crossMatrix(Eigen::Vector3d::UnitX()), ky = crossMatrix(Eigen::Vector3d::UnitY()),
+                        kz = crossMatrix(Eigen::Vector3d::UnitZ());
   const Eigen::Matrix3d A = Eigen::AngleAxisd(angle[2], Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const Eigen::Matrix3d B = Eigen::AngleAxisd(angle[1], Eigen::Vector3d::UnitY()).toRotationMatrix();
   const Eigen::Matrix3d C = Eigen::AngleAxisd(angle[0], Eigen::Vector3d::UnitX()).toRotationMatrix();
