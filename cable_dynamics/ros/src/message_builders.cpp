@@ -125,7 +125,10 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
     m.color.a = 1.0;
   }
   const double length = params.totalLength();
-  const double width = std::max(4.0 * params.diameter, 0.008 * length);  // [m]
+  // The overview's line: a few pixels wide at a whole-cable view (0.4 % of the length: ~3 px for a 50 m
+  // cable across 1000 px), at least 4 diameters; see-through, so that the tube at its real diameter shows
+  // inside it from close by.
+  const double width = std::max(4.0 * params.diameter, 0.004 * length);  // [m]
   visualization_msgs::Marker& line = out.markers.markers[kCableLine];
   line.scale.x = width;
   line.points.resize(n + 1);
@@ -144,7 +147,7 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
     arrow.color.b = 1.0;
   }
   visualization_msgs::Marker& text = out.markers.markers[kScaleText];
-  text.scale.z = std::max(0.5, 0.03 * length);
+  text.scale.z = std::max(0.3, 0.012 * length);  // a legend, not a headline: ~1/4 of the view's width
   text.color.r = text.color.g = text.color.b = 1.0;
   text.text.reserve(160);
   prepareBodyMarkers(params, shapes, names.vessel(), names.rov(), &out.markers.markers[kBodyFirst]);
@@ -253,6 +256,11 @@ void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_posi
   for (auto& t : transforms) t.header.stamp = stamp;
 }
 
+namespace {
+/// The overview line's opacity: the real-diameter tube stays visible inside it.
+constexpr float kOverviewLineAlpha = 0.45f;
+}  // namespace
+
 void fillMarkers(const OutputSource& source, double total_length, double tension_scale, const ros::Time& stamp,
                  visualization_msgs::MarkerArray& msg) {
   const ChainOutputs& c = source.snapshot.chain;
@@ -263,6 +271,7 @@ void fillMarkers(const OutputSource& source, double total_length, double tension
   for (int k = first; k <= n; ++k) {
     setPoint(line.points[k - first], c.ends.col(k));
     line.colors[k - first] = tensionColor(c.tension(std::min(k, n - 1)), tension_scale);
+    line.colors[k - first].a = kOverviewLineAlpha;
   }
   msg.markers[kLoadSphere].pose.position = line.points[n - first];
   const double arrow_per_newton = 0.1 * total_length / std::max(tension_scale, 1.0);  // [m/N]
