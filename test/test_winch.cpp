@@ -352,3 +352,26 @@ TEST(Winch, PayingOutAndHaulingBackInReturnsToTheStart) {
   EXPECT_LT(shape, 0.01);
   EXPECT_NEAR(end.line_pull, start.line_pull, 1e-3 * start.line_pull);
 }
+
+TEST(Winch, AnOperatorsCommandReplacesTheSchedule) {
+  // Issue 27: the schedule pays out from 0.5 s and hauls in from 3 s. The operator stops the winch at 1 s:
+  // nothing of the schedule may follow (before, its haul-in started at 3 s); reset() plays it again.
+  CableParams p = loadConfigString(
+      "cable: {links: 10, length: 20.0, diameter: 0.025, mass_per_length: 0.6}\n"
+      "load: {mass: 20.0, volume: 0.005}\n"
+      "winch: {max_length: 30.0, min_length: 5.0, max_speed: 1.0, max_acceleration: 2.0, speed: 0.0,\n"
+      "        schedule: [{time: 0.5, speed: 0.5}, {time: 3.0, speed: -0.5}]}\n"
+      "simulation: {dt: 0.001}\n");
+  CableSimulator sim(p);
+  while (sim.time() < 1.0 - 1e-9) ASSERT_TRUE(sim.step().ok);
+  EXPECT_NEAR(sim.winch().motion().speed, 0.5, 1e-9);  // the schedule's first command
+  sim.commandWinchSpeed(0.0);
+  while (sim.time() < 5.0 - 1e-9) ASSERT_TRUE(sim.step().ok);
+  EXPECT_EQ(sim.winch().motion().speed, 0.0);  // the operator's stop holds past 3 s
+  const double stopped = sim.deployedLength();
+  while (sim.time() < 6.0 - 1e-9) ASSERT_TRUE(sim.step().ok);
+  EXPECT_EQ(sim.deployedLength(), stopped);
+  sim.reset();
+  while (sim.time() < 1.0 - 1e-9) ASSERT_TRUE(sim.step().ok);
+  EXPECT_NEAR(sim.winch().motion().speed, 0.5, 1e-9);  // reset plays the schedule again from t = 0
+}

@@ -161,12 +161,14 @@ void CableSimulator::commandWinchSpeed(double speed) {
   if (!hasWinch()) throw std::invalid_argument(kNoWinchMessage);
   checkWinchSpeed(speed, params_.winch);
   ends_.winch().commandSpeed(speed);
+  ends_.winch().cancelSchedule();  // the operator's command replaces the configured schedule
 }
 
 void CableSimulator::commandWinchLength(double length) {
   if (!hasWinch()) throw std::invalid_argument(kNoWinchMessage);
   checkWinchLength(length, params_.winch);
   ends_.winch().commandLength(length);
+  ends_.winch().cancelSchedule();
 }
 
 double CableSimulator::deployedLength() const {

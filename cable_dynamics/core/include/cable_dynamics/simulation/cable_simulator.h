@@ -160,10 +160,12 @@ class CableSimulator {
   /// The winch (docs/MODEL.md section 8): commands take effect from the next step, within the limits.
   bool hasWinch() const { return ends_.hasWinch(); }
   const Winch& winch() const { return ends_.winch(); }
-  /// Pay out (> 0) or haul in (< 0) [m/s]; replaces a target length and the schedule's last command.
+  /// Pay out (> 0) or haul in (< 0) [m/s]; replaces a target length and the configured schedule (its
+  /// commands still to come are dropped; reset() starts it again).
   /// Throws std::invalid_argument (params/input_gate.h) without a winch or beyond +-winch.max_speed.
   void commandWinchSpeed(double speed);
-  /// Drive to a deployed length [m] and stop there. Throws std::invalid_argument without a winch or
+  /// Drive to a deployed length [m] and stop there; replaces the schedule as commandWinchSpeed() does.
+  /// Throws std::invalid_argument without a winch or
   /// outside [winch.min_length, winch.max_length].
   void commandWinchLength(double length);
   /// The base link's slot (0 without a winch) and the deployed length [m].

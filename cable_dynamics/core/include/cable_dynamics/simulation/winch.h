@@ -35,6 +35,9 @@ class Winch {
   void commandLength(double length);
   /// Applies the schedule's command for time t [s], if one starts at or before t and was not applied.
   void followSchedule(double t);
+  /// Drops the schedule's commands not applied yet: an operator's command replaces the schedule (until
+  /// reset(), which starts it again from its first command).
+  void cancelSchedule() { next_command_ = params_.schedule.size(); }
 
   /// Fixes the acceleration for the step [t, t + h] [s]. Returns true when it differs from the last
   /// step's (a time scheme must not reuse an evaluation across the change).
