@@ -246,6 +246,7 @@ void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
   const double at = clock_.anchored() ? clock_.dueSimTime(stamp) : sim_->time();
   sim_->setLoadTarget(position - options_.base_position, velocity, attitude, at);
+  last_rov_pose_ = {true, position - options_.base_position, attitude, ros::Time::now()};
   if (params_.load.mode == LoadMode::kFree) {
     ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is free: the pose is ignored (use attached)");
   }
@@ -273,7 +274,22 @@ void CableNode::onBasePose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
       guard_->pose(InputGuard::kBasePose, *msg, ros::Time::now(), resolver_, position, velocity, attitude);
   logInput("base_pose", verdict, guard_->counters(), options_);
   // The hang-off point, relative to where it is at rest (ros.base_position).
-  if (isAccepted(verdict)) sim_->setBaseTarget(position - options_.base_position, velocity, attitude);
+  if (!isAccepted(verdict)) return;
+  sim_->setBaseTarget(position - options_.base_position, velocity, attitude);
+  last_base_pose_ = {true, position - options_.base_position, attitude, ros::Time::now()};
+}
+
+void CableNode::restoreLivePoses() {
+  const ros::Time now = ros::Time::now();
+  const auto live = [&](const HeldPose& p) {
+    return p.known && std::abs((now - p.received).toSec()) <= options_.input_timeout;
+  };
+  if (live(last_base_pose_)) {
+    sim_->setBaseTarget(last_base_pose_.position, Eigen::Vector3d::Zero(), last_base_pose_.attitude);
+  }
+  if (live(last_rov_pose_) && params_.load.mode != LoadMode::kBody) {
+    sim_->setLoadTarget(last_rov_pose_.position, Eigen::Vector3d::Zero(), last_rov_pose_.attitude, sim_->time());
+  }
 }
 
 void CableNode::onCurrent(const geometry_msgs::TwistStamped::ConstPtr& msg) {
@@ -488,6 +504,7 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
     res.message = e.what();
     return true;
   }
+  restoreLivePoses();
   restartClock();  // the simulator's time is 0 again
   source_.alpha_hint.setZero();
   // Tuned coefficients stay (they are the simulator's now); a tuned current is an input like the topic's

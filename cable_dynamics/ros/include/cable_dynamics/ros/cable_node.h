@@ -99,6 +99,18 @@ class CableNode {
   ros::Publisher seabed_pub_, contact_pub_;  ///< with a seabed: the bottom (latched), the links on it
   visualization_msgs::Marker contact_marker_;
   ros::Subscriber rov_sub_, base_sub_, current_sub_, winch_sub_;
+  /// The last accepted ROV and vessel poses (from the base's rest position), put back after a `reset`
+  /// when their stream is live (accepted within ros.input_timeout): a reset restarts the cable, not the
+  /// world around it.
+  struct HeldPose {
+    bool known = false;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();
+    ros::Time received;
+  };
+  HeldPose last_rov_pose_, last_base_pose_;
+  /// After a reset: the live streams' last poses back in the simulator, at rest, at its time 0.
+  void restoreLivePoses();
   // An ROV body simulated here (load.mode body): thrust and station-keeping target in, odometry out.
   ros::Subscriber thrust_sub_, target_sub_;
   SharedPublisher<nav_msgs::Odometry> odom_pub_;
