@@ -174,7 +174,7 @@ TunableValues CableNode::applyTuning(const TunableValues& wanted, unsigned level
       }
       sim_->retune(running);  // RK4's stable step too; rebuilds the chain's constants between two cycles
       params_ = tuned;
-      config_tree_ = tree;
+      adoptTree(config_tree_, tree);
       TunableValues given = wanted;
       std::ostringstream text;
       for (const TunableParameter& t : kTunableParameters) {
@@ -190,8 +190,9 @@ TunableValues CableNode::applyTuning(const TunableValues& wanted, unsigned level
   if (levels & kTuneRate) {
     try {
       checkTunedRate(ros_tree_, wanted.rate);
-      if (!ros_tree_.IsMap()) ros_tree_ = YAML::Node(YAML::NodeType::Map);
-      ros_tree_["rate"] = wanted.rate;
+      YAML::Node ros_tree = ros_tree_.IsMap() ? YAML::Clone(ros_tree_) : YAML::Node(YAML::NodeType::Map);
+      ros_tree["rate"] = wanted.rate;
+      adoptTree(ros_tree_, ros_tree);
       options_.rate = wanted.rate;
       tuned_.rate = wanted.rate;
       timer_.setPeriod(ros::Duration(1.0 / wanted.rate));

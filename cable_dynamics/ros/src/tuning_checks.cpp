@@ -73,6 +73,8 @@ CableParams tunedParams(const YAML::Node& config_tree, const TunableValues& valu
   return params;
 }
 
+void adoptTree(YAML::Node& held, const YAML::Node& fresh) { held.reset(fresh); }
+
 void checkTunedCurrent(const Eigen::Vector3d& current) { checkCurrent(current); }  // the simulator's gate
 
 void checkTunedRate(const YAML::Node& ros_tree, double rate) {
