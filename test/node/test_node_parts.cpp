@@ -157,9 +157,10 @@ TEST_F(GuardTest, StampsNotNewerThanTheLastAcceptedAreRejected) {
 TEST_F(GuardTest, FirstPoseMustBePlausibleAndJumpsUseAMinimumInterval) {
   EXPECT_EQ(rov(pose(5000, 0, 0, 100.0), 100.0), InputVerdict::kImplausible);
   EXPECT_EQ(rov(pose(0, 0, -30, 100.01), 100.01), InputVerdict::kAccepted);
-  // 1 km in 0.5 s, in 1 ns, and 0.3 m in 1 ns (over the 10 ms minimum interval: 30 m/s) are jumps.
-  EXPECT_EQ(rov(pose(1000, 0, -30, 100.51), 100.02), InputVerdict::kJump);
-  EXPECT_EQ(rov(pose(-1000, 0, -30, 100.010000001), 100.02), InputVerdict::kJump);
+  // 15 m in 0.5 s, in 1 ns, and 0.3 m in 1 ns (over the 10 ms minimum interval: 30 m/s) are jumps (all
+  // within the 34 m radius; beyond it a pose is implausible, AStreamBeyondTheRadiusIsNeverFollowed).
+  EXPECT_EQ(rov(pose(15, 0, -30, 100.51), 100.02), InputVerdict::kJump);
+  EXPECT_EQ(rov(pose(-15, 0, -30, 100.010000001), 100.02), InputVerdict::kJump);
   EXPECT_EQ(rov(pose(0.3, 0, -30, 100.010000002), 100.02), InputVerdict::kJump);
   EXPECT_EQ(rov(pose(0.1, 0, -30, 100.02), 100.02), InputVerdict::kAccepted);  // 10 m/s
   EXPECT_NEAR(velocity.x(), 10.0, 1e-6);
@@ -179,6 +180,20 @@ TEST_F(GuardTest, TenConsistentRefusedPosesStartANewStream) {
   EXPECT_EQ(guard.counters().rejected, unsigned(kReacquireAfter - 1));
 }
 
+TEST_F(GuardTest, AStreamBeyondTheRadiusIsNeverFollowed) {
+  // Issue 27: 20 Hz of poses 10 km away were refused once, then followed as a new stream (2e8 N on the
+  // coupling). Now every one is refused, however many come; the ROV back within reach is followed again.
+  ASSERT_EQ(rov(pose(0, 0, -10, 100.0), 100.0), InputVerdict::kAccepted);
+  for (int i = 1; i <= 3 * kReacquireAfter; ++i) {
+    const double t = 100.0 + 0.05 * i;
+    ASSERT_EQ(rov(pose(10000, 0, -10, t), t), InputVerdict::kImplausible) << i;
+  }
+  EXPECT_EQ(position.x(), 0.0);
+  const double t = 100.0 + 0.05 * (3 * kReacquireAfter + 1);
+  EXPECT_EQ(rov(pose(0.5, 0, -10, t), t), InputVerdict::kAccepted);
+  EXPECT_EQ(guard.counters().rejected, unsigned(3 * kReacquireAfter));
+}
+
 TEST_F(GuardTest, AMoveBecomesAcceptableOnceEnoughTimeHasPassed) {
   // 3 m is a jump 20 ms after the last accepted pose, not 0.16 s after it (18.75 m/s).
   ASSERT_EQ(rov(pose(0, 0, -10, 100.0), 100.0), InputVerdict::kAccepted);
@@ -190,7 +205,7 @@ TEST_F(GuardTest, InconsistentJumpsNeverFormAStream) {
   ASSERT_EQ(rov(pose(0, 0, -10, 100.0), 100.0), InputVerdict::kAccepted);
   for (int i = 1; i < 100; ++i) {
     const double t = 100.0 + 0.001 * i;
-    ASSERT_EQ(rov(pose(i % 2 ? 1000 : -1000, 0, -10, t), t), InputVerdict::kJump) << i;
+    ASSERT_EQ(rov(pose(i % 2 ? 30 : -30, 0, -10, t), t), InputVerdict::kJump) << i;
   }
 }
 

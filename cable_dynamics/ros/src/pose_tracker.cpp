@@ -13,8 +13,13 @@ bool PoseTracker::withinSpeed(const Eigen::Vector3d& from, const ros::Time& from
 
 InputVerdict PoseTracker::judge(const Eigen::Vector3d& position, const ros::Time& stamp,
                                 const Eigen::Vector3d& centre) {
+  // Beyond the radius no pose is taken, first or not, and no run of them starts a new stream: a stream the
+  // cable cannot reach would drive the coupling to any force (issue 27: 10 km poses, 2e8 N).
+  if ((position - centre).norm() > limits_.plausible_radius) {
+    streak_ = 0;
+    return InputVerdict::kImplausible;
+  }
   if (!valid_) {
-    if ((position - centre).norm() > limits_.plausible_radius) return refuse(position, stamp, InputVerdict::kImplausible);
     take(position, stamp, Eigen::Vector3d::Zero());
     return InputVerdict::kAccepted;
   }

@@ -36,7 +36,7 @@ struct GuardSettings {
   std::string world_frame = "world";  ///< frame_id meaning "already in the world frame" (as does "")
   double input_timeout = 1.0;         ///< stamps further than this from the clock, either way, are stale [s]
   Eigen::Vector3d base_rest = Eigen::Vector3d::Zero();  ///< the base's rest position, world frame [m]
-  double plausible_radius = 100.0;  ///< a first pose must be this close to the base (rov) or its rest (base) [m]
+  double plausible_radius = 100.0;  ///< every pose must be this close to the base (rov) or its rest (base) [m]
   /// The points of the bodies the cable's ends are fixed to, in each body's frame [m]: the ROV's
   /// attachment (load.attachment) and the vessel's hang-off point (base.hang_off). A pose stream is
   /// tracked at that point of its body, so that its velocity holds the body's rotation too.

@@ -16,7 +16,7 @@ enum class InputVerdict {
   kBadFrame,     ///< an invalid frame name, or one tf2 cannot place in the world frame (rejected)
   kStale,        ///< stamped more than input_timeout before or after the receiver's clock (stale)
   kOutOfOrder,   ///< stamped no later than the last accepted message of the topic (rejected)
-  kImplausible,  ///< a first pose too far from the cable (rejected)
+  kImplausible,  ///< a pose too far from the cable (rejected, never followed)
   kJump,         ///< a pose that implies moving faster than kMaxInputSpeed (rejected)
   kNoWinch,      ///< a winch command, but no winch is configured (rejected)
 };
@@ -36,7 +36,7 @@ inline const char* describe(InputVerdict v) {
     case InputVerdict::kBadFrame: return "has a frame that cannot be placed in the world frame";
     case InputVerdict::kStale: return "is stamped too far from now";
     case InputVerdict::kOutOfOrder: return "is not newer than the last accepted one";
-    case InputVerdict::kImplausible: return "is too far from the cable for a first pose";
+    case InputVerdict::kImplausible: return "is too far from the cable (beyond twice its length and 10 m from the base)";
     case InputVerdict::kJump: return "jumps faster than the speed limit";
     case InputVerdict::kNoWinch: return "commands a winch, but no winch is configured (config key winch:)";
   }

@@ -15,7 +15,7 @@ namespace cable_dynamics {
 struct TrackerLimits {
   double max_speed = 20.0;          ///< a pose implying a faster motion is a jump [m/s]
   double min_interval = 0.01;       ///< shortest interval the jump check divides by [s]
-  double plausible_radius = 100.0;  ///< a first pose must be this close to the expected centre [m]
+  double plausible_radius = 100.0;  ///< every pose must be this close to the expected centre [m]
   int reacquire_after = 10;         ///< this many consecutive consistent refused poses form a new stream
 };
 
@@ -25,7 +25,8 @@ class PoseTracker {
   explicit PoseTracker(const TrackerLimits& limits) : limits_(limits) {}
 
   /// Judges a finite world position [m] stamped `stamp` (effective: the receiver's clock for an unstamped
-  /// message). A first pose must lie within plausible_radius of `centre` [m]; later ones must not move
+  /// message). Every pose must lie within plausible_radius of `centre` [m] (beyond it none is taken and
+  /// none counts towards a new stream); later ones must not move
   /// faster than max_speed over max(interval, min_interval). A refused pose that is consistent with the
   /// refused one before it (within the same speed limit) extends a streak; at reacquire_after the tracker
   /// takes it as its new position (kReacquired). Updates the position and velocity when accepted.
