@@ -375,3 +375,23 @@ TEST(Winch, AnOperatorsCommandReplacesTheSchedule) {
   while (sim.time() < 1.0 - 1e-9) ASSERT_TRUE(sim.step().ok);
   EXPECT_NEAR(sim.winch().motion().speed, 0.5, 1e-9);  // reset plays the schedule again from t = 0
 }
+
+TEST(Winch, ResetToEquilibriumKeepsTheWinchRunning) {
+  // Issue 27: hauling in at 1 m/s (max_acceleration 0.2 m/s^2), reset_to_equilibrium stopped the winch
+  // within one step (-1.0 -> -0.0026 m/s in 10 ms) and then re-accelerated it. It keeps running now: one
+  // step later its speed is within max_acceleration dt of what it was.
+  CableParams p = loadConfigString(
+      "cable: {links: 10, length: 20.0, diameter: 0.025, mass_per_length: 0.6}\n"
+      "load: {mass: 20.0, volume: 0.005}\n"
+      "winch: {max_length: 30.0, min_length: 5.0, max_speed: 1.0, max_acceleration: 0.2, speed: -1.0}\n"
+      "simulation: {dt: 0.001}\n");
+  p.winch.speed = 0.0;
+  CableSimulator sim(p);
+  sim.commandWinchSpeed(-1.0);
+  while (sim.time() < 6.0 - 1e-9) ASSERT_TRUE(sim.step().ok);
+  const double before = sim.winch().motion().speed;
+  ASSERT_NEAR(before, -1.0, 1e-9);
+  ASSERT_TRUE(sim.resetToEquilibrium().converged);
+  ASSERT_TRUE(sim.step().ok);
+  EXPECT_NEAR(sim.winch().motion().speed, before, 0.2 * sim.dt() + 1e-12);
+}

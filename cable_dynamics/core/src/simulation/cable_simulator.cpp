@@ -136,7 +136,8 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   drift_reference_known_ = false;
   largest_scale_ = energy_drift_ = 0.0;
   scheme_->forget();
-  if (hasWinch()) ends_.winch().restart(ends_.winch().motion().length);  // at rest, as the cable
+  // The winch keeps running at its speed (stopping it in one step broke its acceleration limit).
+  if (hasWinch()) ends_.winch().moveTo(ends_.winch().motion().length);
   return s;
 }
 

@@ -27,6 +27,12 @@ class Winch {
   void reset(double length);
   /// `length` deployed [m], at rest, the command kept (recovery after a divergence).
   void restart(double length);
+  /// `length` deployed [m] at the present speed and command (the cable put at rest around a running winch:
+  /// reset to equilibrium must not stop it faster than max_acceleration allows).
+  void moveTo(double length) {
+    now_.length = length;
+    now_.acceleration = 0.0;
+  }
   /// Pay out (> 0) or haul in (< 0) at `speed` [m/s]; throws std::invalid_argument (params/input_gate.h)
   /// beyond +-max_speed or not finite, changing nothing (never clamped).
   void commandSpeed(double speed);
