@@ -71,13 +71,13 @@ KINKED = ["cable.links=20", "cable.length=10.0", "cable.diameter=0.025", "cable.
           "initial.elevation=[0.5" + ", 0.0" * 19 + "]", "simulation.integrator=implicit"]
 
 
-def run_sampled(tmp_path, *sets, duration="10"):
-    """cable_sim at its default sampling (every 10 ms), where its energy check reads the balance."""
+def run_sampled(tmp_path, *sets, duration="10", sample=None):
+    """cable_sim at its default sampling (every 10 ms) or at `sample` seconds."""
     binary = os.environ.get("CABLE_SIM_BIN")
     if not binary:
         pytest.fail("set CABLE_SIM_BIN to the built executable (scripts/test.sh does)")
     cmd = [binary, "--config", os.path.join(REPO, "config", "default.yaml"), "--duration", duration,
-           "--output", str(tmp_path / "run.csv")]
+           "--output", str(tmp_path / "run.csv")] + (["--sample", sample] if sample else [])
     for s in sets:
         cmd += ["--set", s]
     return subprocess.run(cmd, capture_output=True, text=True, timeout=600)
@@ -91,6 +91,11 @@ def test_energy_the_implicit_step_puts_in_is_reported(tmp_path):
     done = run_sampled(tmp_path, *KINKED, "simulation.dt=0.01")
     assert done.returncode == 5, done.stderr
     assert "energy balance rose" in done.stderr, done.stderr
+    # Issue 27: the same run sampled every 0.5 s exited 0 (the rise fell between the samples); the balance
+    # is followed at every step now.
+    sparse = run_sampled(tmp_path, *KINKED, "simulation.dt=0.01", sample="0.5")
+    assert sparse.returncode == 5, sparse.stderr
+    assert "energy balance rose" in sparse.stderr, sparse.stderr
     ok = run_sampled(tmp_path, *KINKED, "simulation.dt=0.0025")
     assert ok.returncode == 0, ok.stderr
     assert "energy balance at the samples" in ok.stderr, ok.stderr

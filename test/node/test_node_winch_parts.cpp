@@ -143,8 +143,8 @@ TEST(WinchOutputs, PreparedForTheConfiguredDeploymentWithNamesPerSlot) {
                  prefixed(), "world", plain);
   EXPECT_EQ(plain.joints.name.size(), 9u);
   EXPECT_EQ(plain.transforms.size(), 11u);
-  EXPECT_EQ(plain.diagnostics.status[0].values.size(), 12u);
-  EXPECT_EQ(o.diagnostics.status[0].values.size(), 19u);
+  EXPECT_EQ(plain.diagnostics.status[0].values.size(), 13u);
+  EXPECT_EQ(o.diagnostics.status[0].values.size(), 20u);
 }
 
 TEST(WinchOutputs, ShapingMovesNamesBetweenTheMessagesAndTheDrumWithoutAllocating) {
@@ -255,29 +255,29 @@ TEST(WinchOutputs, FilledFromASimulatorThatPaysOutAndHaulsIn) {
     EXPECT_NEAR(line.points.front().z, 0.0, 1e-12);
     // The winch's diagnostics.
     const auto& values = o.diagnostics.status[0].values;
-    ASSERT_EQ(values.size(), 19u);
-    EXPECT_EQ(values[12].key, "deployed length [m]");
-    EXPECT_NEAR(std::stod(values[12].value), sim.deployedLength(), 1e-5 * sim.deployedLength());
-    EXPECT_EQ(std::stoi(values[13].value), deployed);
-    EXPECT_EQ(values[15].key, "line pull [N]");
-    EXPECT_EQ(values[16].key, "winch command");
+    ASSERT_EQ(values.size(), 20u);
+    EXPECT_EQ(values[13].key, "deployed length [m]");
+    EXPECT_NEAR(std::stod(values[13].value), sim.deployedLength(), 1e-5 * sim.deployedLength());
+    EXPECT_EQ(std::stoi(values[14].value), deployed);
+    EXPECT_EQ(values[16].key, "line pull [N]");
+    EXPECT_EQ(values[17].key, "winch command");
   };
   publish();
   expectConsistent();
-  EXPECT_EQ(o.diagnostics.status[0].values[16].value, "stop (speed 0)");
+  EXPECT_EQ(o.diagnostics.status[0].values[17].value, "stop (speed 0)");
   // Pay out two links at 2 m/s.
   sim.commandWinchSpeed(2.0);
   stepUntilFirstLink(sim, 9, 10.0);
   publish();
   expectConsistent();
-  EXPECT_EQ(o.diagnostics.status[0].values[16].value, "pay out at 2 m/s");
+  EXPECT_EQ(o.diagnostics.status[0].values[17].value, "pay out at 2 m/s");
   EXPECT_GT(o.state.links_added, 1u);
   // Haul in to 12 m: links go back onto the drum.
   sim.commandWinchLength(12.0);
   stepUntilFirstLink(sim, 14, 20.0);
   publish();
   expectConsistent();
-  EXPECT_EQ(o.diagnostics.status[0].values[16].value, "to length 12 m");
+  EXPECT_EQ(o.diagnostics.status[0].values[17].value, "to length 12 m");
   EXPECT_GT(o.state.links_removed, 0u);
   // And a reset: back to the configured deployment.
   sim.reset();

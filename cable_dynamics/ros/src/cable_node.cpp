@@ -436,6 +436,7 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   status_.real_time_factor = window_.realTimeFactor();
   status_.loop_rate = window_.loopRate();
   status_.retried_share = window_.retriedShare();
+  status_.energy_error = std::max(sim_->energyDrift(), sim_->energyRise());
   status_.received = inputs.received;
   status_.rejected = inputs.rejected;
   status_.stale = inputs.stale;

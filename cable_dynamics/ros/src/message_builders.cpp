@@ -55,7 +55,8 @@ void setPose(geometry_msgs::Transform& t, const Eigen::Vector3d& p, const Eigen:
 /// The diagnostics' key-value pairs, in this order (values written by index).
 const char* const kDiagnosticKeys[] = {"loop rate [Hz]",    "real-time factor",  "simulated time [s]", "lag [s]",
                                        "dropped time [s]",  "step time [s]",     "received inputs",    "rejected inputs",
-                                       "stale inputs",      "diverged steps",    "retried steps",      "retried share"};
+                                       "stale inputs",      "diverged steps",    "retried steps",      "retried share",
+                                       "energy balance error"};
 constexpr int kDiagnosticCount = sizeof(kDiagnosticKeys) / sizeof(kDiagnosticKeys[0]);
 /// With a winch, these follow (all numbers but the command, a phrase).
 const char* const kWinchKeys[] = {"deployed length [m]", "deployed links", "winch speed [m/s]", "line pull [N]",
@@ -353,6 +354,9 @@ void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_positi
   for (auto& t : out.body_transforms) t.header.stamp = stamp;
 }
 
+/// The energy balance's error beyond which the diagnostics warn [-]: cable_sim's exit-5 bound for a rise.
+constexpr double kEnergyErrorWarning = 1e-2;
+
 unsigned char diagnosticLevel(const NodeStatus& s, std::string& message) {
   using diagnostic_msgs::DiagnosticStatus;
   if (s.diverged_recently) {
@@ -366,6 +370,10 @@ unsigned char diagnosticLevel(const NodeStatus& s, std::string& message) {
   if (s.dropped_recently) {
     message = "cannot keep up with the clock: simulated time dropped (lag above ros.max_lag)";
     return DiagnosticStatus::ERROR;
+  }
+  if (s.energy_error > kEnergyErrorWarning) {
+    message = "the energy balance rose or drifted beyond 1 % of its scale: simulation.dt is too large for this cable";
+    return DiagnosticStatus::WARN;
   }
   if (!s.paused && (s.lag > kLagWarning || (s.real_time_factor > 0.0 && s.real_time_factor < 0.9))) {
     message = "behind real time";
@@ -386,7 +394,7 @@ void fillDiagnostics(const NodeStatus& s, const ros::Time& stamp, diagnostic_msg
   const double values[kDiagnosticCount] = {s.loop_rate,        s.real_time_factor, s.sim_time,   s.lag,
                                            s.dropped_time,     s.step_time,        double(s.received),
                                            double(s.rejected), double(s.stale),    double(s.diverged),
-                                           double(s.retried),  s.retried_share};
+                                           double(s.retried),  s.retried_share,    s.energy_error};
   for (int i = 0; i < kDiagnosticCount; ++i) format(status.values[i].value, i >= 6 && i <= 10 ? "%.0f" : "%.6g", values[i]);
   if (static_cast<int>(status.values.size()) < kDiagnosticCount + kWinchCount) return;  // no winch
   const WinchStatus& w = s.winch;

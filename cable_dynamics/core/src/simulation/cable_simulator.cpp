@@ -134,7 +134,7 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   dynamics_.followAzimuths(x_);
   start_balance_known_ = false;
   drift_reference_known_ = false;
-  largest_scale_ = energy_drift_ = 0.0;
+  largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
   scheme_->forget();
   // The winch keeps running at its speed (stopping it in one step broke its acceleration limit).
   if (hasWinch()) ends_.winch().moveTo(ends_.winch().motion().length);
@@ -209,7 +209,7 @@ void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::Vector
   dynamics_.stateFromPaper(q, qd, x_);
   start_balance_known_ = false;
   drift_reference_known_ = false;
-  largest_scale_ = energy_drift_ = 0.0;
+  largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
   retried_steps_ = 0;
   scheme_->forget();
   // Continue azimuths from the given angles (straight-down links keep the azimuth they were given).
@@ -247,7 +247,21 @@ bool CableSimulator::advance(double h) {
     attitude /= norm;
   }
   if (judgeStep(x_, n, limits_, firstLink()) != StepVerdict::kAccepted) return false;
-  if (!scheme_->balancesEnergy()) return true;
+  if (!scheme_->balancesEnergy()) {
+    // Not judged step by step (its balance closes to second order), but followed at every step, so that no
+    // sampling of the output hides a rise: the balance after this step is the next one's start.
+    const EnergyBalance after = balanceNow();
+    if (!std::isfinite(after.value)) return false;
+    start_balance_ = after;
+    start_balance_known_ = true;
+    if (!drift_reference_known_) {
+      drift_reference_ = before.value;
+      drift_reference_known_ = true;
+    }
+    largest_scale_ = std::max({largest_scale_, before.mechanical, after.mechanical, 1e-9});
+    energy_rise_ = std::max(energy_rise_, (after.value - drift_reference_) / largest_scale_);
+    return true;
+  }
   // The energy after the step comes from an evaluation at the new state (which RK4 keeps as the next
   // step's first stage). A state where x' is not finite fails here, not one step later.
   if (!scheme_->evaluateEnd(dynamics_, ends_.at(time_), x_)) return false;

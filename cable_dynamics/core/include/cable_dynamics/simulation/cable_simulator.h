@@ -221,6 +221,11 @@ class CableSimulator {
   /// Restarts from the present balance when an external base target moves the base (a jump in
   /// potential energy that no work term records), keeping the largest drift so far.
   double energyDrift() const { return scheme_->balancesEnergy() ? energy_drift_ : -1.0; }
+  /// How far the energy balance has risen since reset, at any step, as a fraction of the largest mechanical
+  /// energy scale seen [-], for schemes whose steps are not judged by it (the implicit one: its balance may
+  /// fall with its numerical damping, but a rise is energy its steps put in); -1 for RK4 (energyDrift()).
+  /// Restarts with the drift's reference (an external base target), keeping the largest rise so far.
+  double energyRise() const { return scheme_->balancesEnergy() ? -1.0 : energy_rise_; }
   /// Steps since reset that needed substeps.
   long retriedSteps() const { return retried_steps_; }
 
@@ -257,6 +262,7 @@ class CableSimulator {
   double drift_reference_ = 0.0;        ///< the balance the drift is measured from [J]
   double largest_scale_ = 0.0;          ///< the largest mechanical magnitude seen [J]
   double energy_drift_ = 0.0;           ///< [-]
+  double energy_rise_ = 0.0;            ///< [-], schemes not judged by the balance
   long retried_steps_ = 0;
   long links_added_ = 0, links_removed_ = 0;
   double regrid_energy_ = 0.0;          ///< [J]

@@ -69,6 +69,9 @@ struct NodeStatus {
   double real_time_factor = 0.0;  ///< simulated s per wall s over the last window [-]
   double loop_rate = 0.0;        ///< cycles per wall second over the last window [Hz]
   double retried_share = 0.0;    ///< steps needing substeps in the last window [-]
+  /// The energy balance's error since reset, of its scale [-]: RK4's drift (energyDrift), or the implicit
+  /// step's rise (energyRise), followed at every step.
+  double energy_error = 0.0;
   bool paused = false;
   bool diverged_recently = false;  ///< a step diverged since the last diagnostics
   bool dropped_recently = false;   ///< simulated time was dropped since the last diagnostics
