@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Cholesky>
 
 #include "cable_dynamics/params/format_values.h"
 
@@ -35,10 +35,11 @@ void requireSymmetricDefinite(const Matrix& m, const std::string& key, bool semi
   if ((m - m.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(scale, 1e-300)) {
     throw ConfigError(key, formatMatrixRows(m), "a symmetric matrix");
   }
-  const double least = Eigen::SelfAdjointEigenSolver<Matrix>(m, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  // The signs of LDL^T's pivots are those of the eigenvalues (Sylvester's law of inertia).
+  const double least = Eigen::LDLT<Matrix>(m).vectorD().minCoeff();
   if (semi ? least < -1e-9 * scale : !(least > 1e-12 * scale && scale > 0.0)) {
     throw ConfigError(key, formatMatrixRows(m),
-                      std::string(semi ? "positive semi-definite" : "positive definite") + " (least eigenvalue " +
+                      std::string(semi ? "positive semi-definite" : "positive definite") + " (least LDL^T pivot " +
                           number(least) + ")");
   }
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross()
 
 #include "cable_dynamics/params/cable_params.h"
 #include "cable_dynamics/dynamics/forces/point_drag.h"  // the points' drag (attachments, the load)

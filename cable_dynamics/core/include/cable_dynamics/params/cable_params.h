@@ -104,8 +104,9 @@ struct RovBodyParams {
   Eigen::Vector3d center_of_buoyancy = Eigen::Vector3d::Zero();  ///< from O, body frame [m]
   /// Attitude at start and after a reset: roll, pitch, yaw (world from body, R = Rz(yaw) Ry(pitch) Rx(roll)) [rad].
   Eigen::Vector3d initial_attitude = Eigen::Vector3d::Zero();
-  /// The built-in station keeper (simulation/station_keeper.h): a PD law on the pose error towards the
-  /// start pose (or a target set later), its wrench added to the commanded thrust. Off when all gains are 0.
+  /// The built-in station keeper (simulation/station_keeper.h): a PID law on the position error and a PD
+  /// law on the attitude error towards the start pose (or a target set later), its wrench added to the
+  /// commanded thrust. Off when all gains are 0.
   Eigen::Vector3d position_gain = Eigen::Vector3d::Zero();  ///< world x, y, z [N/m]
   Eigen::Vector3d velocity_gain = Eigen::Vector3d::Zero();  ///< world x, y, z [N s/m]
   Eigen::Vector3d integral_gain = Eigen::Vector3d::Zero();  ///< world x, y, z, on the position error's integral [N/(m s)]
