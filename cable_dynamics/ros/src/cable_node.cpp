@@ -247,7 +247,8 @@ void CableNode::onRovPose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
   const double at = clock_.anchored() ? clock_.dueSimTime(stamp) : sim_->time();
   sim_->setLoadTarget(position - options_.base_position, velocity, attitude, at);
-  last_rov_pose_ = {true, position - options_.base_position, attitude, ros::Time::now()};
+  // Live by its stamp, not by when the callback ran: a queue that lags must not make old poses look live.
+  last_rov_pose_ = {true, position - options_.base_position, attitude, stamp};
   if (params_.load.mode == LoadMode::kFree) {
     ROS_WARN_ONCE("cable_dynamics: rov_pose received but load.mode is free: the pose is ignored (use attached)");
   }
@@ -277,7 +278,8 @@ void CableNode::onBasePose(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   // The hang-off point, relative to where it is at rest (ros.base_position).
   if (!isAccepted(verdict)) return;
   sim_->setBaseTarget(position - options_.base_position, velocity, attitude);
-  last_base_pose_ = {true, position - options_.base_position, attitude, ros::Time::now()};
+  last_base_pose_ = {true, position - options_.base_position, attitude,
+                     msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp};
 }
 
 void CableNode::restoreLivePoses() {
