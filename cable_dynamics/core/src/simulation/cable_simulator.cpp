@@ -247,28 +247,22 @@ bool CableSimulator::advance(double h) {
     attitude /= norm;
   }
   if (judgeStep(x_, n, limits_, firstLink()) != StepVerdict::kAccepted) return false;
-  if (!scheme_->balancesEnergy()) {
+  EnergyBalance after;
+  if (scheme_->balancesEnergy()) {
+    // The energy after the step comes from an evaluation at the new state (which RK4 keeps as the next
+    // step's first stage). A state where x' is not finite fails here, not one step later.
+    if (!scheme_->evaluateEnd(dynamics_, ends_.at(time_), x_)) return false;
+    double magnitude = 0.0;
+    const double mechanical = dynamics_.solvedMechanicalEnergy(x_, magnitude);
+    after = energyBalance(mechanical, magnitude, x_, n);
+    if (judgeEnergy(before, after, limits_) != StepVerdict::kAccepted) return false;
+  } else {
     // Not judged step by step (its balance closes to second order), but followed at every step, so that no
-    // sampling of the output hides a rise: the balance after this step is the next one's start.
-    const EnergyBalance after = balanceNow();
+    // sampling of the output hides a rise.
+    after = balanceNow();
     if (!std::isfinite(after.value)) return false;
-    start_balance_ = after;
-    start_balance_known_ = true;
-    if (!drift_reference_known_) {
-      drift_reference_ = before.value;
-      drift_reference_known_ = true;
-    }
-    largest_scale_ = std::max({largest_scale_, before.mechanical, after.mechanical, 1e-9});
-    energy_rise_ = std::max(energy_rise_, (after.value - drift_reference_) / largest_scale_);
-    return true;
   }
-  // The energy after the step comes from an evaluation at the new state (which RK4 keeps as the next
-  // step's first stage). A state where x' is not finite fails here, not one step later.
-  if (!scheme_->evaluateEnd(dynamics_, ends_.at(time_), x_)) return false;
-  double magnitude = 0.0;
-  const double mechanical = dynamics_.solvedMechanicalEnergy(x_, magnitude);
-  const EnergyBalance after = energyBalance(mechanical, magnitude, x_, n);
-  if (judgeEnergy(before, after, limits_) != StepVerdict::kAccepted) return false;
+  // The balance after this step is the next one's start; the drift (RK4) and the rise (implicit) since reset.
   start_balance_ = after;
   start_balance_known_ = true;
   if (!drift_reference_known_) {
@@ -276,7 +270,9 @@ bool CableSimulator::advance(double h) {
     drift_reference_known_ = true;
   }
   largest_scale_ = std::max({largest_scale_, before.mechanical, after.mechanical, 1e-9});
-  energy_drift_ = std::max(energy_drift_, std::abs(after.value - drift_reference_) / largest_scale_);
+  const double change = (after.value - drift_reference_) / largest_scale_;
+  energy_drift_ = std::max(energy_drift_, std::abs(change));
+  energy_rise_ = std::max(energy_rise_, change);
   return true;
 }
 
