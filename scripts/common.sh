@@ -34,7 +34,7 @@ DEB_PACKAGES=(
   build-essential cmake catkin ros-core-dev ros-message-generation python3-rospy python3-rostest
   librostest-dev libgtest-dev googletest libtf2-ros-dev liburdfdom-dev libeigen3-dev libyaml-cpp-dev
   nlohmann-json3-dev libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev libvisualization-msgs-dev
-  libdiagnostic-msgs-dev python3-std-msgs python3-geometry-msgs python3-sensor-msgs
+  libdiagnostic-msgs-dev libnav-msgs-dev python3-std-msgs python3-geometry-msgs python3-sensor-msgs
   python3-sympy python3-numpy python3-scipy python3-pytest python3-yaml python3-matplotlib libmujoco-dev
   libtf2-eigen-dev libtinyxml-dev rviz xvfb imagemagick python3-tf2-ros python3-diagnostic-msgs
   python3-visualization-msgs python3-nav-msgs python3-rosgraph-msgs python3-rosmsg python3-roslaunch python3-rosunit python3-roslib
