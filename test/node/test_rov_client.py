@@ -37,20 +37,19 @@ def paper_to_world(v):
     return np.array([v[0], -v[1], -v[2]])
 
 
-# The ROV keeps station 5 m above the tip's rest point, so the tether hangs slack in the config's current (the
-# old held target fails the 5 kg ROV here: 4.3-16302 N). Not judged here, because it does not hold yet: 1 m
-# above it, the tether close to its reach, the exchange still swings for 5 kg at 100 Hz (24-40 N against
-# 37 N) and 20 kg at 50 Hz (23-62 N), and the coupling softened for 20 Hz costs the 3000 kg ROV a steady
-# 5 % (docs/ROV_COUPLING.md);
-# both runs start at rest in the static equilibrium for that station (the node's reset_to_equilibrium, the
-# bindings' reset_to_equilibrium), so that the last 10 s of 30 s judge the exchange, not the first swing.
-RISE = np.array([0.0, 0.0, 5.0])
+# Two stations: 5 m above the tip's rest point, where the tether hangs slack in the config's current, and 1 m
+# above it, where the tether is close to its reach (bowed nearly straight by the current: its end is stiff,
+# and the exchange's spring works against it, not against the tip's inertia). Both runs start at rest in the
+# static equilibrium for that station (the node's reset_to_equilibrium, the bindings' reset_to_equilibrium), so
+# that the last 10 s of 30 s judge the exchange, not the first swing.
+SLACK = np.array([0.0, 0.0, 5.0])
+NEAR_TAUT = np.array([0.0, 0.0, 1.0])
 
 
-def station():
-    """Where the ROV keeps station: RISE above the tip's rest point (world axes from the base) [m]."""
+def station(rise):
+    """Where the ROV keeps station: `rise` above the tip's rest point (world axes from the base) [m]."""
     import cable_dynamics
-    return paper_to_world(cable_dynamics.Simulator.from_file(CONFIG).snapshot().link_ends[-1]) + RISE
+    return paper_to_world(cable_dynamics.Simulator.from_file(CONFIG).snapshot().link_ends[-1]) + rise
 
 
 def demo_config():
@@ -85,7 +84,10 @@ def body_reference(mass, point, duration=DURATION):
     controller = RovBody(params, pose["position"], target=point, current=CURRENT)
     net_buoyancy = (config["load"]["volume"] * rho - config["load"]["mass"]) * g
     drag = (params["linear_damping"][0] + params["quadratic_damping"][0] * abs(CURRENT[0])) * CURRENT[0]
-    controller.preload(paper_to_world(sim.snapshot().load_force) + np.array([drag, 0.0, net_buoyancy]))
+    # Pre-loaded with the statics' pull, the one the held ROV feels at rest. Not the body run's own force at
+    # t = 0: the body is not held then, and on the near-taut tether that force is 47 N against the statics' 76 N,
+    # which left the truth drifting over 20 N through the whole run.
+    controller.preload(paper_to_world(rest.load_force) + np.array([drag, 0.0, net_buoyancy]))
     termination_weight = np.array([0.0, 0.0, -(termination["mass"] - rho * termination["volume"]) * g])
     steps = int(round(duration / sim.dt))
     times, forces, positions, work = np.zeros(steps), np.zeros((steps, 3)), np.zeros((steps, 3)), np.zeros(steps)
@@ -187,12 +189,15 @@ class RovClient(unittest.TestCase):
         rospy.wait_for_service(NS + "/reset", timeout=60.0)
         cls.reset = rospy.ServiceProxy(NS + "/reset", Reset)
         cls.reset_to_equilibrium = rospy.ServiceProxy(NS + "/reset_to_equilibrium", ResetToEquilibrium)
-        cls.station = station()
 
-    def case(self, mass, rate):
-        reference = body_reference(mass, self.station)
+    def case(self, mass, rate, rise=SLACK, judged_against_body=True):
+        """Runs the client against the node and the body run beside it. judged_against_body: the issue's bounds
+        (force within 5 %, ROV within 1 cm of the body run's); otherwise only that the exchange is steady (no
+        limit cycle), for a case whose offset from the body run is a known, documented limit."""
+        point = station(rise)
+        reference = body_reference(mass, point)
         self.assertTrue(self.reset().success)
-        client = PoseClient(mass, rate, self.station)
+        client = PoseClient(mass, rate, point)
         time.sleep(0.5)  # the publisher's connection
         client.start_at_rest(self.reset_to_equilibrium)
         client.run(DURATION)
@@ -206,23 +211,35 @@ class RovClient(unittest.TestCase):
         ref_force = np.linalg.norm(ref_mean_f)
         force_error = np.linalg.norm(last(t, f) - ref_mean_f, axis=1).max() / ref_force
         position_error = np.linalg.norm(last(t, p) - ref_mean_p, axis=1).max()
+        forces = np.linalg.norm(last(t, f), axis=1)
+        force_spread = (forces.max() - forces.min()) / forces.mean()
+        swing = np.linalg.norm(last(t, p) - last(t, p).mean(axis=0), axis=1).max()
         port_work = w[-1] - last(t, w)[0]
         ref_port_work = reference[3][-1] - last(reference[0], reference[3])[0]
+        # The port's work in the window less what the mean force does over the ROV's net displacement: the
+        # part a cycle would pump. A ROV creeping 2.5 mm along a 40 N pull takes 0.1 J without any cycle.
+        cyclic = port_work - last(t, f).mean(axis=0) @ (last(t, p)[-1] - last(t, p)[0])
+        ref_cyclic = ref_port_work - ref_mean_f @ (ref_p[-1] - ref_p[0])
         ref_spread = np.linalg.norm(ref_f - ref_mean_f, axis=1).max() / ref_force
-        print(f"\n{mass:g} kg at {rate:g} Hz: force {np.linalg.norm(last(t, f), axis=1).min():.2f}-"
-              f"{np.linalg.norm(last(t, f), axis=1).max():.2f} N against {ref_force:.2f} N (body mode's spread "
-              f"{100 * ref_spread:.3f} %): largest difference {100 * force_error:.2f} %; position within "
-              f"{1000 * position_error:.2f} mm; port work over the window {port_work:+.4f} J "
-              f"(body mode {ref_port_work:+.4f} J)", flush=True)
-        # The truth must itself be steady over the window (measured 0.01-0.14 %), or a comparison with its
+        print(f"\n{mass:g} kg at {rate:g} Hz, {rise[2]:g} m above the rest tip: force {forces.min():.2f}-"
+              f"{forces.max():.2f} N against {ref_force:.2f} N (body mode's spread {100 * ref_spread:.3f} %): largest "
+              f"difference {100 * force_error:.2f} %; position within {1000 * position_error:.2f} mm of the body "
+              f"run's, swing {1000 * swing:.2f} mm; port work over the window {port_work:+.4f} J, cyclic "
+              f"{cyclic:+.4f} J (body mode {ref_port_work:+.4f} J, cyclic {ref_cyclic:+.4f} J)", flush=True)
+        # The truth must itself be steady over the window (measured 0.001-0.08 %), or a comparison with its
         # mean says nothing.
         self.assertLess(ref_spread, 0.01)
-        # The issue's bounds: 5 % and 1 cm (measured at most 1.2 % and 2.1 mm).
-        self.assertLess(force_error, 0.05)
-        self.assertLess(position_error, 0.01)
-        # A limit cycle pumps joules a second into the ROV through the port; a passive exchange does not.
-        # Measured: see the closing figures below (docs/ROV_COUPLING.md); the body run itself moves +-0.06 J.
-        self.assertLess(port_work, ref_port_work + 0.1)
+        # No limit cycle: the force steady within 5 % and the ROV's swing within 1.5 cm (measured at most 1.5 %
+        # and 3.9 mm; the limit cycles before the exchange held swung 26-190 N and 0.37 m).
+        self.assertLess(force_spread, 0.05)
+        self.assertLess(swing, 0.015)
+        # A limit cycle pumps joules a second into the ROV through the port; a passive exchange does not. The
+        # cyclic part measured at most 0.0008 J above the body run's (docs/ROV_COUPLING.md).
+        self.assertLess(cyclic, ref_cyclic + 0.005)
+        if judged_against_body:
+            # The issue's bounds: 5 % and 1 cm (measured at most 1.9 % and 9.1 mm).
+            self.assertLess(force_error, 0.05)
+            self.assertLess(position_error, 0.01)
 
     def test_12kg_100hz(self):
         self.case(12.0, 100.0)
@@ -235,6 +252,29 @@ class RovClient(unittest.TestCase):
 
     def test_3000kg_20hz(self):
         self.case(3000.0, 20.0)
+
+    def test_12kg_200hz(self):
+        self.case(12.0, 200.0)
+
+    def test_5kg_200hz(self):
+        self.case(5.0, 200.0)
+
+    def test_5kg_20hz(self):
+        self.case(5.0, 20.0)
+
+    def test_5kg_100hz_near_taut(self):
+        # Within the issue's bounds when measured (1.5 %, 9.1 mm), but the position with a 10 % margin only:
+        # judged for steadiness, the figure reported (docs/ROV_COUPLING.md).
+        self.case(5.0, 100.0, NEAR_TAUT, judged_against_body=False)
+
+    def test_20kg_50hz_near_taut(self):
+        self.case(20.0, 50.0, NEAR_TAUT)
+
+    def test_5kg_20hz_near_taut(self):
+        # Steady, but 8 % below the body run's force (measured 35.2-35.4 N against 37.2 N): the coupling sized
+        # for 20 Hz (350 N/m) lets the tip sit 0.1 m from the ROV, and 1 m short of its reach the tether's
+        # pull changes by about 20 N/m. An open limit (docs/ROV_COUPLING.md); the body mode is exact here.
+        self.case(5.0, 20.0, NEAR_TAUT, judged_against_body=False)
 
 
 if __name__ == "__main__":
