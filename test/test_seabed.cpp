@@ -3,7 +3,8 @@
 // part of it on a flat bottom: touchdown, fairlead and horizontal tensions, and the anchor tension less
 // mu times the grounded weight when the grounded part slides toward the fairlead); Coulomb's law for a
 // cable dragged along the bottom, axially and sideways, read off the forces at its ends; the friction
-// angle atan(mu) on a sloped grid; and the energy balance, which contact must not feed.
+// angle atan(mu) on a sloped grid; the bed's damper as a rocking rod's decay (a damped oscillator); and
+// the energy balance, which contact must not feed.
 #include <cmath>
 #include <iostream>
 

@@ -11,6 +11,7 @@ import unittest
 
 import rospy
 import rosunit
+from cable_msgs.msg import CableState
 from geometry_msgs.msg import PoseStamped, WrenchStamped
 from nav_msgs.msg import Odometry
 
@@ -24,8 +25,9 @@ def finite(odom):
 
 class BodyModeNode(unittest.TestCase):
     def setUp(self):
-        self.odoms = []
+        self.odoms, self.states = [], []
         rospy.Subscriber(NS + "rov_odom", Odometry, self.odoms.append)
+        rospy.Subscriber(NS + "cable_state", CableState, self.states.append)
         self.thrust = rospy.Publisher(NS + "rov_thrust", WrenchStamped, queue_size=10)
         self.target = rospy.Publisher(NS + "rov_target", PoseStamped, queue_size=10)
         deadline = time.time() + 30.0
@@ -41,10 +43,13 @@ class BodyModeNode(unittest.TestCase):
         msg.header.frame_id = frame
         msg.wrench.force.x = float("nan") if nan else force_x
         end = time.time() + seconds
+        sent = 0
         while time.time() < end:
             msg.header.stamp = rospy.Time.now()
             self.thrust.publish(msg)
+            sent += 1
             time.sleep(0.05)
+        return sent
 
     def test_odometry_thrust_bad_thrust_and_target(self):
         first = self.odoms[-1]
@@ -57,9 +62,19 @@ class BodyModeNode(unittest.TestCase):
         pushed = self.x()
         print(f"\n30 N forward for 3 s: {pushed - start:+.3f} m off the station", flush=True)
         self.assertGreater(pushed - start, 0.1)
-        # Rejected: a NaN, a foreign frame (the 30 N stays in force until the stream counts as stopped).
-        self.publish_thrust(0.0, 0.5, nan=True)
-        self.publish_thrust(100.0, 0.5, frame="not_the_rov")
+        # Rejected: a NaN, a foreign frame (the 30 N stays in force until the stream counts as stopped), and
+        # a target with a NaN: each counted in cable_state with the guarded streams' rejections.
+        rejected, received = self.states[-1].rejected_inputs, self.states[-1].received_inputs
+        bad = self.publish_thrust(0.0, 0.5, nan=True) + self.publish_thrust(100.0, 0.5, frame="not_the_rov")
+        nan_target = PoseStamped()
+        nan_target.header.frame_id = "world"
+        nan_target.pose.position.x = float("nan")
+        nan_target.pose.orientation.w = 1.0
+        self.target.publish(nan_target)
+        bad += 1
+        time.sleep(0.5)
+        self.assertEqual(self.states[-1].rejected_inputs - rejected, bad)
+        self.assertEqual(self.states[-1].received_inputs - received, bad)
         self.assertTrue(all(finite(o) for o in self.odoms))
         # The stream stopped: its thrust is dropped after ros.input_timeout (1 s), and the keeper brings the
         # ROV back to its station.

@@ -341,6 +341,7 @@ void CableNode::restartClock() { clock_.anchor(ros::Time::now(), sim_->time()); 
 void CableNode::onRovThrust(const geometry_msgs::WrenchStamped::ConstPtr& msg) {
   Eigen::Vector3d force, torque;
   std::string why;
+  ++body_received_;
   if (!readThrust(*msg, names_.rov(), force, torque, why)) {
     ++thrust_rejected_;
     ROS_WARN_STREAM_THROTTLE(kLogPeriod, "cable_dynamics: rov_thrust rejected (" << thrust_rejected_ << " so far): " << why);
@@ -355,6 +356,7 @@ void CableNode::onRovTarget(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   Eigen::Vector3d position;
   Eigen::Quaterniond attitude;
   std::string why;
+  ++body_received_;
   if (!readBodyTarget(*msg, options_.world_frame, options_.base_position, position, attitude, why)) {
     ++target_rejected_;
     ROS_WARN_STREAM_THROTTLE(kLogPeriod, "cable_dynamics: rov_target rejected (" << target_rejected_ << " so far): " << why);
@@ -439,8 +441,9 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   status_.loop_rate = window_.loopRate();
   status_.retried_share = window_.retriedShare();
   status_.energy_error = std::max(sim_->energyDrift(), sim_->energyRise());
-  status_.received = inputs.received;
-  status_.rejected = inputs.rejected;
+  // The ROV body's inputs (rov_thrust, rov_target) count with the guarded streams' in cable_state.
+  status_.received = inputs.received + static_cast<unsigned>(body_received_);
+  status_.rejected = inputs.rejected + static_cast<unsigned>(thrust_rejected_ + target_rejected_);
   status_.stale = inputs.stale;
   max_tension_seen_ = std::max(max_tension_seen_, source_.snapshot.chain.tension.maxCoeff());
   const double scale = options_.tension_scale > 0.0 ? options_.tension_scale : max_tension_seen_;

@@ -118,6 +118,7 @@ class CableNode {
   ros::Time last_thrust_;        ///< the last accepted rov_thrust; zero before the first
   bool thrust_held_ = false;     ///< a commanded thrust is in force (zeroed when its stream goes stale)
   unsigned long thrust_rejected_ = 0, thrust_stale_ = 0, target_rejected_ = 0;
+  unsigned long body_received_ = 0;  ///< rov_thrust and rov_target messages, valid or not
   void onRovThrust(const geometry_msgs::WrenchStamped::ConstPtr& msg);
   void onRovTarget(const geometry_msgs::PoseStamped::ConstPtr& msg);
   /// A thrust stream silent for ros.input_timeout: its thrust is dropped (thrusters off), counted once.
