@@ -6,7 +6,7 @@
 
 namespace cable_dynamics {
 
-/// Layout of the flat state vector x (size 7n + 2): per link its unit axis u_k, its total twist about
+/// Layout of the flat state vector x (size 7n + 2, and 7 more with an ROV body): per link its unit axis u_k, its total twist about
 /// the vertical sigma_k = psi_k + phi_k and its angular velocity omega_k (paper frame), then two energy
 /// accumulators.
 struct StateLayout {
