@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/params/format_values.h"
 
 using cable_dynamics::CableParams;
 using cable_dynamics::ConfigError;
@@ -253,4 +254,23 @@ TEST(ConfigLoader, BaseFixityAndClampDirection) {
   // The paper's springs are measured from the vertical: neither a pin nor a tilted clamp applies.
   expectRejected("base.fixity=pinned", "base.fixity");
   expectRejected("base.direction=[1, 0, 0]", "base.direction");
+}
+
+TEST(ConfigLoader, RefusalsPrintTheValueAtFullPrecision) {
+  // Issue 27: refusals printed numbers with std::to_string's 6 decimals, so a value just off a bound read
+  // as the bound itself ("20.000000 ... adding up to 20"). formatNumber prints the shortest digits that
+  // read back as the same double.
+  using cable_dynamics::formatNumber;
+  EXPECT_EQ(formatNumber(19.999999999), "19.999999999");
+  EXPECT_EQ(formatNumber(0.1), "0.1");
+  EXPECT_EQ(std::stod(formatNumber(1.0 / 3.0)), 1.0 / 3.0);
+  const std::string config =
+      "cable: {links: 4, length: 20.0, diameter: 0.03, mass_per_length: 0.8,\n"
+      "        sections: [{length: 9.9999999}, {length: 10.0}]}\n";
+  try {
+    loadConfigString(config);
+    ADD_FAILURE() << "sections adding up to 19.9999999 m of a 20 m cable were accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("they add up to 19.9999999 m"), std::string::npos) << e.what();
+  }
 }

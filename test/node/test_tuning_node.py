@@ -11,7 +11,9 @@ import rospy
 import rosunit
 from cable_msgs.msg import CableState
 from cable_msgs.srv import ResetToEquilibrium, SetPaused
+from geometry_msgs.msg import TwistStamped
 from sensor_msgs.msg import JointState
+from std_msgs.msg import Float64
 
 NS = "/tune_test"
 SERVER = NS + "/cable_dynamics_node/tuning"
@@ -145,9 +147,39 @@ class Tuning(unittest.TestCase):
         self.assertLess(paid_out, 4.5)
         reply = self.update(winch_speed=2.5)  # beyond winch.max_speed = 2
         self.assertEqual(reply["winch_speed"], 1.0)
+        # A winch/speed message replaces the tuned speed: the server shows the one in force (issue 27: it
+        # kept showing the tuned 1.0).
+        speed = rospy.Publisher(NS + "/winch/speed", Float64, queue_size=1, latch=True)
+        speed.publish(Float64(0.5))
+        self.assertTrue(self.shown("winch_speed", 0.5), "the server still shows the tuned winch speed")
         self.update(winch_speed=0.0)
         time.sleep(2.0)
         self.assertLess(abs(self.state().winch_speed), 1e-9)
+        speed.unregister()
+
+    def test_6_the_current_topic_shows_in_the_server(self):
+        # While the current topic publishes, its current is in force: the server shows it, and a tuned
+        # current is refused (the topic takes precedence).
+        topic = rospy.Publisher(NS + "/current", TwistStamped, queue_size=1)
+        time.sleep(0.5)  # the connection
+        flow = TwistStamped()
+        flow.header.frame_id = "world"
+        flow.twist.linear.y = 0.25
+        deadline = time.time() + 3.0
+        while time.time() < deadline:
+            flow.header.stamp = rospy.Time.now()
+            topic.publish(flow)
+            time.sleep(0.05)
+        self.assertTrue(self.shown("current_y", 0.25), "the server does not show the topic's current")
+        flow.header.stamp = rospy.Time.now()
+        topic.publish(flow)
+        reply = self.update(current_y=0.0)
+        self.assertEqual(reply["current_y"], 0.25)
+        # Silent for longer than ros.input_timeout: tuning sets it again.
+        topic.unregister()
+        time.sleep(2.5)
+        reply = self.update(current_y=0.0)
+        self.assertEqual(reply["current_y"], 0.0)
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@
 #include <tf2_eigen/tf2_eigen.h>
 
 #include "cable_dynamics/dynamics/paper_model.h"
+#include "cable_dynamics/params/format_values.h"
 #include "cable_dynamics/ros/cycle_stepper.h"
 #include "cable_dynamics/ros/coupling_port_message.h"
 #include "cable_dynamics/ros/coupling_sizer.h"
@@ -152,7 +153,7 @@ TunableValues CableNode::applyTuning(const TunableValues& wanted, unsigned level
       checkTunedCurrent(wanted.current);
       if (currentTopicActive()) {
         throw std::invalid_argument("the current topic publishes (a message accepted within ros.input_timeout = " +
-                                    std::to_string(options_.input_timeout) + " s): it sets the current");
+                                    formatNumber(options_.input_timeout) + " s): it sets the current");
       }
       sim_->setCurrent(wanted.current);
       tuned_.current = wanted.current;
@@ -302,13 +303,29 @@ void CableNode::onCurrent(const geometry_msgs::TwistStamped::ConstPtr& msg) {
   if (!isAccepted(verdict)) return;
   sim_->setCurrent(current);
   last_current_accepted_ = ros::Time::now();
+  // The tuning server shows the current in force: the topic's while it publishes (issue 27).
+  const bool changed = current != tuned_.current;
+  tuned_.current = current;
+  showInForce(changed);
+}
+
+void CableNode::showInForce(bool changed) {
+  show_pending_ = show_pending_ || changed;
+  if (!show_pending_ || (ros::WallTime::now() - last_show_).toSec() < kShowPeriod) return;
+  tuning_->show(tuned_);
+  last_show_ = ros::WallTime::now();
+  show_pending_ = false;
 }
 
 void CableNode::onWinchSpeed(const std_msgs::Float64::ConstPtr& msg) {
   double speed = 0.0;
   const InputVerdict verdict = guard_->winchSpeed(*msg, speed);
   logWinchSpeed(verdict, guard_->counters(), params_.winch.max_speed);
-  if (isAccepted(verdict)) sim_->commandWinchSpeed(speed);  // replaces a tuned winch_speed (not shown there)
+  if (!isAccepted(verdict)) return;
+  sim_->commandWinchSpeed(speed);  // the last command wins, the topic's or the tuning's
+  const bool changed = speed != tuned_.winch_speed;
+  tuned_.winch_speed = speed;
+  showInForce(changed);
 }
 
 bool CableNode::onSetWinchLength(cable_msgs::SetWinchLength::Request& req,
@@ -377,6 +394,7 @@ void CableNode::dropStaleThrust(const ros::Time& now) {
 void CableNode::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
   if (params_.load.mode == LoadMode::kBody) dropStaleThrust(now);
+  showInForce(false);  // a topic's last change, if its show was held back
   const ros::WallTime wall_start = ros::WallTime::now();
   if (!clock_.anchored() || now < last_now_) {  // first cycle, or the clock jumped back (/clock restarted)
     clock_.anchor(now, sim_->time());
@@ -432,7 +450,7 @@ void CableNode::onTimer(const ros::TimerEvent&) {
 
 void CableNode::publishOutputs(const ros::Time& stamp) {
   if (!readOutputs(*sim_, source_)) {
-    recoverFromDivergence("non-finite state at t = " + std::to_string(sim_->time()) + " s (nothing published)");
+    recoverFromDivergence("non-finite state at t = " + formatNumber(sim_->time()) + " s (nothing published)");
     return;
   }
   const InputCounters& inputs = guard_->counters();
@@ -466,7 +484,7 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
                                                    odom_msg_.twist.twist.angular.x + odom_msg_.twist.twist.angular.y +
                                                    odom_msg_.twist.twist.angular.z + odom_msg_.pose.pose.orientation.w));
   if (!allFinite(outputs_) || (attached && !allFinite(port_msg_)) || !odom_finite) {
-    recoverFromDivergence("non-finite output at t = " + std::to_string(sim_->time()) + " s (nothing published)");
+    recoverFromDivergence("non-finite output at t = " + formatNumber(sim_->time()) + " s (nothing published)");
     return;
   }
   joint_pub_.publish(outputs_.joints);

@@ -6,6 +6,7 @@
 
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/params/config_section.h"
+#include "cable_dynamics/params/format_values.h"
 #include "cable_dynamics/params/input_gate.h"
 #include "cable_dynamics/ros/node_options.h"
 #include "cable_dynamics/simulation/tunable_keys.h"
@@ -87,7 +88,7 @@ bool checkTunedWinchSpeed(double speed, const WinchParams& winch, std::string& w
   if (!winch.enabled) {
     if (speed == 0.0) return true;
     std::ostringstream s;
-    s << "winch_speed = " << speed << ": " << kNoWinchMessage << " (only 0)";
+    s << "winch_speed = " << formatNumber(speed) << ": " << kNoWinchMessage << " (only 0)";
     why = s.str();
     return false;
   }

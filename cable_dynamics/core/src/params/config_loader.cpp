@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "cable_dynamics/params/format_values.h"
 #include "cable_dynamics/params/input_gate.h"
 #include "seabed_config.h"
 
@@ -236,11 +237,11 @@ void parseSections(const YAML::Node& rows, const CableRest& rest, CableParams& p
     s.bending_rigidity = row.number("bending_rigidity", k.bending_rigidity, 0.0, kInf, false, "N m^2");
     s.torsional_rigidity = row.number("torsional_rigidity", k.torsional_rigidity, 0.0, kInf, false, "N m^2");
     if (row.has("bending_rigidity") && s.bending_rigidity > 0.0 && (k.elevation > 0.0 || k.azimuth > 0.0)) {
-      throw ConfigError(row.path() + ".bending_rigidity", std::to_string(s.bending_rigidity),
+      throw ConfigError(row.path() + ".bending_rigidity", formatNumber(s.bending_rigidity),
                         "0 when cable.stiffness.elevation or azimuth is given (one or the other)");
     }
     if (row.has("torsional_rigidity") && s.torsional_rigidity > 0.0 && k.torsion > 0.0) {
-      throw ConfigError(row.path() + ".torsional_rigidity", std::to_string(s.torsional_rigidity),
+      throw ConfigError(row.path() + ".torsional_rigidity", formatNumber(s.torsional_rigidity),
                         "0 when cable.stiffness.torsion is given (one or the other)");
     }
     s.drag_normal = row.number("drag_normal", p.fluid.drag_normal, 0.0, 100.0, false, "");
@@ -250,16 +251,16 @@ void parseSections(const YAML::Node& rows, const CableRest& rest, CableParams& p
     if (last && !row.has("length")) {
       if (!(total - sum > 1e-9 * total)) {
         throw ConfigError(row.path() + ".length", "(missing)",
-                          "the rest of the cable, but the sections before it already take " + std::to_string(sum) +
-                              " m of " + std::to_string(total) + " m");
+                          "the rest of the cable, but the sections before it already take " + formatNumber(sum) +
+                              " m of " + formatNumber(total) + " m");
       }
       s.length = total - sum;
     }
     sum += s.length;
     if (sum > total * (1.0 + 1e-9) || (last && std::abs(sum - total) > 1e-9 * total)) {
-      throw ConfigError(row.path() + ".length", std::to_string(s.length),
-                        "section lengths adding up to the cable's length " + std::to_string(total) + " m (they add up to " +
-                            std::to_string(sum) + " m" + (last ? "" : " before the last") + ")");
+      throw ConfigError(row.path() + ".length", formatNumber(s.length),
+                        "section lengths adding up to the cable's length " + formatNumber(total) + " m (they add up to " +
+                            formatNumber(sum) + " m" + (last ? "" : " before the last") + ")");
     }
     p.sections.push_back(s);
   }
@@ -326,7 +327,7 @@ void parseWinch(Section winch, CableParams& p) {
   // is between one and 2.25 links long.
   const int stored = static_cast<int>(std::ceil((w.max_length - deployed) / link - 1e-9)) + 1;
   if (p.links + stored > kMaxLinks) {
-    throw ConfigError(winch.path() + ".max_length", std::to_string(w.max_length),
+    throw ConfigError(winch.path() + ".max_length", formatNumber(w.max_length),
                       "at most " + std::to_string(kMaxLinks) + " links of " + std::to_string(link) + " m in all");
   }
   w.stored_links = stored;

@@ -131,7 +131,7 @@ void checkSimulatorRules(const CableParams& p) {
         {"cable.damping.torsion", p.damping.torsion}};
     for (const auto& [key, value] : values) {
       if (value != 0.0) {
-        throw ConfigError(key, std::to_string(value),
+        throw ConfigError(key, formatNumber(value),
                           "0 with cable.stiffness.model: paper in the simulator (the paper's azimuth and torsion "
                           "springs and dampers are singular at the vertical); use model: bending");
       }
@@ -141,7 +141,7 @@ void checkSimulatorRules(const CableParams& p) {
     // mis-tracks it (measured: a 10 ms step stalls the current preset away from its steady state). RK4
     // tracks it.
     if (p.simulation.integrator == Integrator::kSemiImplicit && p.damping.elevation != 0.0) {
-      throw ConfigError("cable.damping.elevation", std::to_string(p.damping.elevation),
+      throw ConfigError("cable.damping.elevation", formatNumber(p.damping.elevation),
                         "0 with simulation.integrator: semi_implicit unless cable.stiffness.model is bending (or use "
                         "integrator: rk4)");
     }
@@ -150,7 +150,7 @@ void checkSimulatorRules(const CableParams& p) {
     if (p.simulation.integrator == Integrator::kImplicit && (p.stiffness.elevation != 0.0 || p.damping.elevation != 0.0)) {
       const bool spring = p.stiffness.elevation != 0.0;
       throw ConfigError(spring ? "cable.stiffness.elevation" : "cable.damping.elevation",
-                        std::to_string(spring ? p.stiffness.elevation : p.damping.elevation),
+                        formatNumber(spring ? p.stiffness.elevation : p.damping.elevation),
                         "0 with simulation.integrator: implicit unless cable.stiffness.model is bending (or use "
                         "integrator: rk4)");
     }

@@ -8,6 +8,18 @@
 
 namespace cable_dynamics {
 
+/// A number as refusal messages print it: the shortest of 15 or 17 significant digits that reads back as
+/// the same double, so 19.999999999 never reads as 20 (std::to_string's 6 decimals did) and 0.1 stays 0.1.
+inline std::string formatNumber(double v) {
+  for (int digits : {15, 17}) {
+    std::ostringstream s;
+    s.precision(digits);
+    s << v;
+    if (digits == 17 || std::stod(s.str()) == v) return s.str();
+  }
+  return {};
+}
+
 template <class Vector>
 std::string formatVector(const Vector& v) {
   std::ostringstream s;

@@ -133,6 +133,12 @@ class CableNode {
   bool current_tuned_ = false;        ///< the tuned current replaces the configured one (also after reset)
   ros::Time last_current_accepted_;   ///< of the current topic; zero before the first
   std::unique_ptr<LiveTuning> tuning_;
+  /// A topic (current, winch/speed) changed a value the tuning server shows: shown at most every
+  /// kShowPeriod (each show sets parameters on the master), the last change always.
+  void showInForce(bool changed);
+  static constexpr double kShowPeriod = 0.2;  ///< [s] of wall time
+  ros::WallTime last_show_;
+  bool show_pending_ = false;
 
   CableOutputs outputs_;  ///< preallocated, written by index every cycle
   OutputSource source_;
