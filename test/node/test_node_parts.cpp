@@ -384,6 +384,17 @@ TEST(NodeOptions, DefaultsAndEveryKey) {
   EXPECT_EQ(o.max_steps_per_cycle, 10);
 }
 
+TEST(NodeOptions, TheStepCapKeepsRealTimeUnlessGiven) {
+  // Issue 27: at ros.rate 0.1 the fixed cap of 2000 steps (2 s at dt 1 ms) stepped 2 s of every 10 s cycle.
+  // Left out, the cap covers two periods (a late cycle catches up) and is never below 2000; given, it is
+  // honoured (test/node/slow_test.yaml caps at 40 on purpose).
+  EXPECT_EQ(stepsPerCycleCap(parse("{rate: 0.1}"), 1e-3), 20000);
+  EXPECT_EQ(stepsPerCycleCap(parse("{rate: 100}"), 1e-3), 2000);
+  EXPECT_EQ(stepsPerCycleCap(parse("{rate: 100}"), 1e-6), 20000);
+  EXPECT_EQ(stepsPerCycleCap(parse("{rate: 0.1, max_steps_per_cycle: 40}"), 1e-3), 40);
+  EXPECT_EQ(stepsPerCycleCap(parse("{rate: 0.1}"), 1e-9), 10000000);  // the key's own upper bound
+}
+
 TEST(NodeOptions, BadValuesAreRefusedNamingTheKey) {
   expectRefused("{max_steps_per_cycle: 1.5}", "ros.max_steps_per_cycle");
   expectRefused("{max_steps_per_cycle: 0}", "ros.max_steps_per_cycle");

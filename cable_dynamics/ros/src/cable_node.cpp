@@ -74,10 +74,17 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                                      << integratorName(params_.simulation.integrator) << ", dt " << params_.simulation.dt
                                      << " s, rate " << options_.rate << " Hz, world frame '" << options_.world_frame
                                      << "', frame prefix '" << options_.frame_prefix << "', input timeout "
-                                     << options_.input_timeout << " s, at most " << options_.max_steps_per_cycle
+                                     << options_.input_timeout << " s, at most " << stepsPerCycleCap(options_, sim_->dt())
                                      << " steps per cycle, max lag " << options_.max_lag
                                      << " s; recommended RK4 step " << sim_->estimateStableTimeStep()
                                      << " s (half its estimated stability limit)");
+  const double per_cycle = stepsPerCycleCap(options_, sim_->dt()) * sim_->dt();  // [s] of simulated time
+  if (per_cycle * options_.rate < 1.0) {
+    ROS_WARN_STREAM("cable_dynamics: ros.max_steps_per_cycle = " << options_.max_steps_per_cycle << " steps of "
+                    << sim_->dt() << " s simulate at most " << per_cycle << " s per " << 1.0 / options_.rate
+                    << " s cycle: the node cannot keep real time (real-time factor at most " << per_cycle * options_.rate
+                    << "); leave the key out for a cap that can");
+  }
   if (params_.winch.enabled) {
     const WinchParams& w = params_.winch;
     ROS_INFO_STREAM("cable_dynamics: winch at the base: " << sim_->deployedLength() << " m deployed in "
@@ -410,7 +417,7 @@ void CableNode::onTimer(const ros::TimerEvent&) {
     // Whole steps up to the clock, bounded by a count and by wall time; the rest is lag, made up later
     // unless it exceeds ros.max_lag.
     const double due = (clock_.dueSimTime(now) - sim_->time()) / sim_->dt();
-    const long wanted = std::clamp<long>(static_cast<long>(std::floor(due + 1e-9)), 0, options_.max_steps_per_cycle);
+    const long wanted = std::clamp<long>(static_cast<long>(std::floor(due + 1e-9)), 0, stepsPerCycleCap(options_, sim_->dt()));
     cycle = stepCycle(*sim_, wanted, wall_start + ros::WallDuration(kSteppingShare / options_.rate));
     status_.retried += static_cast<unsigned>(cycle.retried);
     if (cycle.diverged) {

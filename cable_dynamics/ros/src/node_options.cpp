@@ -1,5 +1,8 @@
 #include "cable_dynamics/ros/node_options.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <xmlrpcpp/XmlRpcValue.h>
 
 #include "cable_dynamics/params/config_loader.h"
@@ -9,6 +12,12 @@
 #include "cable_dynamics/ros/xmlrpc_yaml.h"
 
 namespace cable_dynamics {
+
+int stepsPerCycleCap(const NodeOptions& options, double dt) {
+  if (options.max_steps_given) return options.max_steps_per_cycle;
+  const double two_periods = std::ceil(2.0 / (options.rate * dt));
+  return static_cast<int>(std::clamp(two_periods, double(options.max_steps_per_cycle), 1e7));
+}
 
 NodeOptions parseNodeOptions(const YAML::Node& ros_section, const std::string& default_prefix) {
   ConfigSection ros(ros_section, "ros");
@@ -25,6 +34,7 @@ NodeOptions parseNodeOptions(const YAML::Node& ros_section, const std::string& d
     o.base_position = Eigen::Vector3d(b[0], b[1], b[2]);
   }
   o.input_timeout = ros.number("input_timeout", o.input_timeout, 1e-3, 1e6, false, "s");
+  o.max_steps_given = ros.has("max_steps_per_cycle");
   o.max_steps_per_cycle = ros.integer("max_steps_per_cycle", o.max_steps_per_cycle, 1, 10000000, false);
   o.max_lag = ros.number("max_lag", o.max_lag, 0.01, 3600.0, false, "s");
   o.tension_scale = ros.number("tension_scale", o.tension_scale, 0.0, 1e9, false, "N");

@@ -21,7 +21,8 @@ struct NodeOptions {
   std::string frame_prefix;           ///< prepended to every frame and joint name; default "<namespace>/"
   Eigen::Vector3d base_position = Eigen::Vector3d::Zero();  ///< cable base at rest, world frame [m]
   double input_timeout = 1.0;     ///< inputs older than this, or stamped further ahead, are stale [s]
-  int max_steps_per_cycle = 2000;  ///< catch-up bound per cycle, in steps
+  int max_steps_per_cycle = 2000;  ///< catch-up bound per cycle, in steps (stepsPerCycleCap())
+  bool max_steps_given = false;     ///< ros.max_steps_per_cycle was given: honoured as it is
   double max_lag = 1.0;            ///< simulated time behind the clock beyond this is dropped (and reported) [s]
   double tension_scale = 0.0;      ///< colour scale top [N]; 0 = the largest tension seen so far
   double diagnostics_period = 1.0;  ///< [s]
@@ -30,6 +31,11 @@ struct NodeOptions {
   /// exchange's delay (CouplingSizer); 0 keeps the configured coupling whatever the exchange.
   double min_rov_mass = 5.0;
 };
+
+/// The most steps of `dt` [s] a cycle takes: ros.max_steps_per_cycle when given; otherwise enough for two
+/// cycle periods at `options.rate` (so that a slow rate keeps real time and a late cycle can catch up), and
+/// never fewer than the default 2000 (issue 27: rate 0.1 with dt 1 ms stepped 2 s of every 10 s).
+int stepsPerCycleCap(const NodeOptions& options, double dt);
 
 /// Validates the `ros` section of a parameter tree (absent: all defaults). `default_prefix` is the
 /// prefix used when `frame_prefix` is not given. Throws ConfigError naming the key, the value and the
