@@ -1,4 +1,4 @@
-// Issue 26: the coupling sized for the pose exchange (CouplingSizer): the closed-form bounds k = 0.35 m / tau^2
+// Issue 26: the coupling sized for the pose exchange (CouplingSizer): the closed-form bounds k = 0.25 m / tau^2
 // and c = 0.5 m / tau at the delay tau = exchange period + the node's period, capped by the configured
 // coupling; the exchange period measured from stamps (the 90 % quantile: the slow exchanges), robust to
 // stalls; no chasing of jitter.
@@ -26,8 +26,8 @@ bool feed(CouplingSizer& sizer, ros::Time& t, double period, int count, double j
 
 TEST(CouplingSizer, StartsSizedForAnExchangeAtTheNodesRate) {
   CouplingSizer sizer(20000.0, 2000.0, 5.0, 0.01);  // 100 Hz node: tau = 0.02 s
-  EXPECT_NEAR(sizer.stiffness(), 0.35 * 5.0 / (0.02 * 0.02), 1e-9);  // 4375 N/m
-  EXPECT_NEAR(sizer.damping(), 0.75 * 5.0 / 0.02, 1e-9);             // 187.5 N s/m
+  EXPECT_NEAR(sizer.stiffness(), 0.25 * 5.0 / (0.02 * 0.02), 1e-9);  // 3125 N/m
+  EXPECT_NEAR(sizer.damping(), 0.5 * 5.0 / 0.02, 1e-9);              // 125 N s/m
 }
 
 TEST(CouplingSizer, FollowsTheMeasuredExchangeAndNeverExceedsTheConfiguredCoupling) {
@@ -35,8 +35,8 @@ TEST(CouplingSizer, FollowsTheMeasuredExchangeAndNeverExceedsTheConfiguredCoupli
   ros::Time t(100.0);
   EXPECT_TRUE(feed(sizer, t, 0.05, 20, 0.004));  // 20 Hz with +-4 ms jitter: tau = 0.06 s
   EXPECT_NEAR(sizer.exchangePeriod(), 0.054, 1e-9);  // the slow intervals' 90 % quantile
-  EXPECT_NEAR(sizer.stiffness(), 0.35 * 5.0 / std::pow(sizer.delay(), 2), 1e-9);
-  EXPECT_NEAR(sizer.damping(), 0.75 * 5.0 / sizer.delay(), 1e-9);
+  EXPECT_NEAR(sizer.stiffness(), 0.25 * 5.0 / std::pow(sizer.delay(), 2), 1e-9);
+  EXPECT_NEAR(sizer.damping(), 0.5 * 5.0 / sizer.delay(), 1e-9);
   // Jitter alone does not resize (the hysteresis is +25 % / -50 % of the delay).
   EXPECT_FALSE(feed(sizer, t, 0.05, 50, 0.006));
   // 1 kHz: the bound exceeds the configured coupling, which caps it.

@@ -14,15 +14,11 @@ namespace cable_dynamics {
 class CouplingSizer {
  public:
   /// The delay's share of the ROV's inertia the coupling may use: k <= kSpring m / tau^2 and
-  /// c <= kDamper m / tau (tau the loop delay [s], m the lightest ROV [kg]). The ROV felt alone, its
-  /// equation m x'' = -(c x' + k x)(t - tau) is, in units of tau, s^2 + (a s + b) e^-s = 0 with b = k tau^2 / m
-  /// and a = c tau / m: its rightmost root is at -0.15 / tau for (a, b) = (0.75, 0.35), against -0.13 for the
-  /// earlier (0.5, 0.25), whose softer spring let a 5 kg ROV's tip sit far enough from it at 20 Hz to pull
-  /// 8 % less on a nearly taut tether (3.7 % now, docs/ROV_COUPLING.md). From the pose-client runs of
-  /// test/node/test_rov_client.py: at tau = 20 ms a 5 kg ROV diverged at k = 20 kN/m (b = 1.6) and held at
-  /// 5 kN/m (0.4).
-  static constexpr double kSpring = 0.35;
-  static constexpr double kDamper = 0.75;
+  /// c <= kDamper m / tau (tau the loop delay [s], m the lightest ROV [kg]). Chosen from the pose-client runs
+  /// of test/node/test_rov_client.py (docs/ROV_COUPLING.md gives the figures): at tau = 20 ms a 5 kg ROV
+  /// diverged at k = 20 kN/m (k tau^2 / m = 1.6) and held at 5 kN/m (0.4).
+  static constexpr double kSpring = 0.25;
+  static constexpr double kDamper = 0.5;
   /// A new size is applied only when the measured delay exceeds the one the size in force was made for by
   /// more than kSoften (a softer coupling), or falls below it by more than kStiffen: each new size changes
   /// the spring's force at the offset it holds (40 N at 1.3 cm, k 3 kN/m) in one step, and a size chasing
