@@ -41,7 +41,8 @@ class OutputRecorder {
   long numbers_checked = 0;
   std::string non_finite;        ///< where the first non-finite number was ("" = none)
   double peak_force = 0.0;       ///< largest |wrench force| received [N]
-  double peak_joint_rate = 0.0;  ///< largest |joint velocity| received [rad/s]
+  double peak_joint_rate = 0.0;  ///< largest |joint velocity| received [rad/s], of states stamped after:
+  ros::Time peak_joint_rate_after;  ///< (zero: all) a subscriber queue may still hold older states
 
   bool allReceived() const {
     return joint_count > 0 && state_count > 0 && marker_count > 0 && wrench_count > 0 && tf_count > 0;
@@ -73,7 +74,7 @@ class OutputRecorder {
     for (double v : m.position) check(v, "joint_states.position");
     for (double v : m.velocity) {
       check(v, "joint_states.velocity");
-      peak_joint_rate = std::max(peak_joint_rate, std::abs(v));
+      if (m.header.stamp > peak_joint_rate_after) peak_joint_rate = std::max(peak_joint_rate, std::abs(v));
     }
     for (double v : m.effort) check(v, "joint_states.effort");
     joints = m;
