@@ -53,6 +53,8 @@ target_link_libraries(test_azimuth_tracker cable_dynamics_core ${GTEST_MAIN_LIBR
 catkin_add_gtest(test_simulator test/test_simulator.cpp)
 target_link_libraries(test_simulator cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
+catkin_add_gtest(test_axial_elasticity test/test_axial_elasticity.cpp)
+target_link_libraries(test_axial_elasticity cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 catkin_add_gtest(test_end_fixity test/test_end_fixity.cpp)
 target_link_libraries(test_end_fixity cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 

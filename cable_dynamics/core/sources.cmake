@@ -32,6 +32,7 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/dynamics/stiff_articulated_body.cpp
   # dynamics/forces: each force's value, power, Jacobian and form at rest (most are header-only), and the
   # energy balance's power sums
+  ${CABLE_CORE_DIR}/src/dynamics/forces/axial_spring.cpp
   ${CABLE_CORE_DIR}/src/dynamics/forces/power_balance.cpp
   ${CABLE_CORE_DIR}/src/dynamics/chain_dynamics.cpp
   # simulation: time schemes, the winch, end conditions, the step check, the simulator, link frames

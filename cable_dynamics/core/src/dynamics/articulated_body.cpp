@@ -77,6 +77,12 @@ EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainModel& model, LinkBlocks& link
 /// From the load inwards, fold everything outboard of joint k into (M_k, F_k). The load is a point mass
 /// at the tip: J_n = m_L a_n - F_L = m_L d_n + (m_L a0_n - F_L). Returns F_0, the force on the whole
 /// chain at the base when the base end does not accelerate beyond its known part (d_0 = 0).
+///
+/// With axial elasticity (kAxial) each link's far end is a prismatic joint along u: what is outboard of
+/// it, (M, F) at the far end, passes along u only the stretch's tension T (u . J = -T), so eliminating
+/// s'' = -(T + u . F + (M u) . d_q) / (u^T M u) leaves M - (M u)(M u)^T / (u^T M u) and
+/// F - (M u)(T + u . F) / (u^T M u) at the rigid far end, l + s from the base end (the lever below).
+template <bool kAxial>
 EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, bool all_joint_forces) {
   const double load_inertia = model.load().inertia;
   Symmetric3 child = Symmetric3::scaledIdentity(load_inertia);
@@ -90,7 +96,19 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
     const LinkConstants& c = model.of(k);
     LinkBlock& block = data.links.of(k);
     const int i = LinkBlocks::lane(k);
-    const double l = c.length[i];
+    // The lever from the base end to the far end, l (+ s with axial elasticity).
+    const double l = kAxial ? c.length[i] + block.stretch[i] : c.length[i];
+    if (kAxial) {
+      const bool locked = k == model.links() - 1 && model.lastStretchLocked();
+      const Vec3 u = block.u[i], m_u = child * u;
+      const double inverse = locked ? 0.0 : 1.0 / dot(u, m_u);
+      const double bias = inverse * (block.axial_tension[i] + dot(u, child_force));
+      block.stretch_gain.set(i, inverse * m_u);
+      block.stretch_bias[i] = bias;
+      child = {child.xx - inverse * m_u.x * m_u.x, child.xy - inverse * m_u.x * m_u.y, child.xz - inverse * m_u.x * m_u.z,
+               child.yy - inverse * m_u.y * m_u.y, child.yz - inverse * m_u.y * m_u.z, child.zz - inverse * m_u.z * m_u.z};
+      child_force = child_force - bias * m_u;
+    }
     const Vec3 e1 = block.e1[i], e2 = block.e2[i];
     // Transverse inertia about joint k in the plane: S = c1 I + l^2 C^T M C with C = [u]x^T [e1 e2]
     // = [-e2, e1]; c1 is the link's own (translation integral plus thickness).
@@ -138,6 +156,11 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
 /// (e1, e2) basis) and C y = y2 e1 - y1 e2 make d_{k+1} = T_k d_k + c_k, with T_k = I + l (e2 x1^T -
 /// e1 x2^T) and c_k = l (y_g2 e1 - y_g1 e2), formed on vectors for a block's links just before its turn.
 /// The serial pass is then three short dot products per link. Returns d_n, the tip's.
+///
+/// With axial elasticity the far end's stretch adds s'' u = -(b + g . d_q) u to the far end's d_q =
+/// T_k d_k + c_k (g, b: the backward pass's stretch_gain and stretch_bias): P = I - u g^T folds into
+/// T_k and c_k, so the serial pass is unchanged.
+template <bool kAxial>
 EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links) {
   const int n = model.links(), first = model.firstLink();
   Vec3 d = {0.0, 0.0, 0.0};  // the base translates as prescribed: d_0 = 0
@@ -148,12 +171,24 @@ EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links)
     LinkBlock& block = links.block(b);
     Lanes3 row_x, row_y, row_z, offset;  // T_k's rows and c_k
     for (int i = 0; i < kBlockLanes; ++i) {
-      const double l = c.length[i];
+      const double l = kAxial ? c.length[i] + block.stretch[i] : c.length[i];
       const Vec3 p = l * block.e1[i], r = l * block.e2[i], x1 = block.x1[i], x2 = block.x2[i];
-      row_x.set(i, {1.0 + r.x * x1.x - p.x * x2.x, r.x * x1.y - p.x * x2.y, r.x * x1.z - p.x * x2.z});
-      row_y.set(i, {r.y * x1.x - p.y * x2.x, 1.0 + r.y * x1.y - p.y * x2.y, r.y * x1.z - p.y * x2.z});
-      row_z.set(i, {r.z * x1.x - p.z * x2.x, r.z * x1.y - p.z * x2.y, 1.0 + r.z * x1.z - p.z * x2.z});
-      offset.set(i, block.y2[i] * p - block.y1[i] * r);
+      Vec3 tx = {1.0 + r.x * x1.x - p.x * x2.x, r.x * x1.y - p.x * x2.y, r.x * x1.z - p.x * x2.z};
+      Vec3 ty = {r.y * x1.x - p.y * x2.x, 1.0 + r.y * x1.y - p.y * x2.y, r.y * x1.z - p.y * x2.z};
+      Vec3 tz = {r.z * x1.x - p.z * x2.x, r.z * x1.y - p.z * x2.y, 1.0 + r.z * x1.z - p.z * x2.z};
+      Vec3 off = block.y2[i] * p - block.y1[i] * r;
+      if (kAxial) {  // rows of P T = T - u (g^T T), and P c - b u
+        const Vec3 u = block.u[i], g = block.stretch_gain[i];
+        const Vec3 gt = g.x * tx + g.y * ty + g.z * tz;
+        tx = tx - u.x * gt;
+        ty = ty - u.y * gt;
+        tz = tz - u.z * gt;
+        off = off - (dot(g, off) + block.stretch_bias[i]) * u;
+      }
+      row_x.set(i, tx);
+      row_y.set(i, ty);
+      row_z.set(i, tz);
+      offset.set(i, off);
     }
     const int count = std::min(kBlockLanes, n - b * kBlockLanes);
     for (int i = std::max(0, first - b * kBlockLanes); i < count; ++i) {
@@ -207,12 +242,28 @@ EIGEN_ALWAYS_INLINE void jointForcesPass(const ChainModel& model, ChainData& dat
   data.added_mass_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);
 }
 
+/// With axial elasticity: s''_k = u_k . (d_{k+1} - d_k), the part of the far end's acceleration along the
+/// link that its rotation does not give (d_n: the tip's).
+void stretchAccelerationPass(const ChainModel& model, LinkBlocks& links, const Vec3& tip_delta) {
+  const int n = model.links();
+  for (int k = model.firstLink(); k < n; ++k) {
+    LinkBlock& block = links.of(k);
+    const int i = LinkBlocks::lane(k);
+    const Vec3 next = k + 1 < n ? links.of(k + 1).delta_acc[LinkBlocks::lane(k + 1)] : tip_delta;
+    block.stretch_acc[i] = dot(block.u[i], next - block.delta_acc[i]);
+  }
+  if (model.lastStretchLocked()) links.of(n - 1).stretch_acc[LinkBlocks::lane(n - 1)] = 0.0;
+}
+
 }  // namespace
 
 CABLE_HOT_PATH void solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces) {
   linkTermsPass(model, data.links);
-  const Vec3 base_force = backwardPass(model, data, all_joint_forces);  // F_0
-  const Vec3 tip_delta = forwardPass(model, data.links);
+  const bool axial = model.axial();
+  const Vec3 base_force = axial ? backwardPass<true>(model, data, all_joint_forces)  // F_0
+                                : backwardPass<false>(model, data, all_joint_forces);
+  const Vec3 tip_delta = axial ? forwardPass<true>(model, data.links) : forwardPass<false>(model, data.links);
+  if (axial) stretchAccelerationPass(model, data.links, tip_delta);
   data.added_mass_power = accelerationPass(model, data.links);
   jointForcesPass(model, data, base_force, tip_delta, all_joint_forces);
 }

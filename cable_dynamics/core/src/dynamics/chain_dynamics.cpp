@@ -7,6 +7,7 @@
 #include "cable_dynamics/dynamics/dense_solver.h"
 #include "cable_dynamics/dynamics/energies.h"
 #include "cable_dynamics/dynamics/external_loads.h"
+#include "cable_dynamics/dynamics/forces/axial_spring.h"
 #include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/hot_path.h"
 #include "cable_dynamics/dynamics/joint_torques.h"
@@ -48,6 +49,7 @@ void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
   if (!allFinite(x.tail(StateLayout::moving(x.size(), model_.firstLink())))) return false;  // what the passes read
   applyEnds(ends);
+  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
   computeKinematics(model_, data_, x, ends);
   computeBodyTerms(x, ends);
   computeExternalLoads(model_, data_, ends);
@@ -102,10 +104,19 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
   }
   xdot(StateLayout::dissipated(n)) = -lossPower(model_, data_, data_.added_mass_power);
   xdot(StateLayout::workInput(n)) = data_.input_power;
-  if (model_.body().active) {
-    const RovBodyTerms& body = data_.body;
-    xdot.segment<4>(StateLayout::bodyAttitude(n)) = attitudeRate(body.attitude, body.omega);
-    xdot.segment<3>(StateLayout::bodyOmega(n)) = body.acceleration.tail<3>();
+  const bool body = model_.body().active;
+  if (body) {
+    const RovBodyTerms& terms = data_.body;
+    xdot.segment<4>(StateLayout::bodyAttitude(n)) = attitudeRate(terms.attitude, terms.omega);
+    xdot.segment<3>(StateLayout::bodyOmega(n)) = terms.acceleration.tail<3>();
+  }
+  if (model_.axial()) {
+    for (int k = first; k < n; ++k) {
+      const LinkBlock& block = data_.links.of(k);
+      const int i = LinkBlocks::lane(k);
+      xdot(StateLayout::stretch(n, body, k)) = block.stretch_rate[i];
+      xdot(StateLayout::stretchRate(n, body, k)) = block.stretch_acc[i];
+    }
   }
 }
 
@@ -124,11 +135,22 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   out.tension.resize(n);
   out.tension.setZero();
   for (int k = first; k < n; ++k) out.tension(k) = -data_.joint_force.col(k).dot(l.get(&LinkBlock::u, k));
+  if (model_.axial()) {
+    out.stretch.setZero(n);
+    out.far_tension.setZero(n);
+    for (int k = first; k < n; ++k) {
+      out.stretch(k) = l.get(&LinkBlock::stretch, k);
+      out.far_tension(k) = l.get(&LinkBlock::axial_tension, k);
+    }
+  } else {
+    out.stretch.resize(0);
+    out.far_tension.resize(0);
+  }
   out.load_force = data_.load_force;
   out.base_force = -data_.joint_force.col(first);
   out.coupling_force = data_.coupling;
   kineticAndPotentialEnergy(model_, data_, out.kinetic_energy, out.potential_energy);
-  out.elastic_energy = elasticEnergy(model_, data_, x);
+  out.elastic_energy = elasticEnergy(model_, data_, x) + axialEnergy(model_, data_);
   out.contact_energy = 0.0;
   if (model_.seabedContact().enabled()) {
     reportSeabedContact(model_, data_, out.seabed);
@@ -139,6 +161,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
 
 void ChainDynamics::computeLoads(const Eigen::VectorXd& x, const EndInputs& ends) {
   applyEnds(ends);
+  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
   computeKinematics(model_, data_, x, ends);
   computeBodyTerms(x, ends);
   computeExternalLoads(model_, data_, ends);
@@ -147,6 +170,7 @@ void ChainDynamics::computeLoads(const Eigen::VectorXd& x, const EndInputs& ends
 
 double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude) {
   applyEnds(ends);
+  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
   computeKinematics(model_, data_, x, ends);
   computeBodyTerms(x, ends);
   return solvedMechanicalEnergy(x, magnitude);
@@ -154,6 +178,7 @@ double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs
 
 void ChainDynamics::computeBodyPose(const Eigen::VectorXd& x, const EndInputs& ends) {
   applyEnds(ends);
+  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
   computeKinematics(model_, data_, x, ends);
   computeBodyTerms(x, ends);
 }
@@ -161,7 +186,7 @@ void ChainDynamics::computeBodyPose(const Eigen::VectorXd& x, const EndInputs& e
 double ChainDynamics::solvedMechanicalEnergy(const Eigen::VectorXd& x, double& magnitude) {
   double kinetic = 0.0, potential = 0.0;
   kineticAndPotentialEnergy(model_, data_, kinetic, potential);
-  const double elastic = elasticEnergy(model_, data_, x);
+  const double elastic = elasticEnergy(model_, data_, x) + axialEnergy(model_, data_);
   const double contact = seabedContactEnergy(model_, data_);
   magnitude = std::abs(kinetic) + std::abs(potential) + std::abs(elastic) + contact;
   return kinetic + potential + elastic + contact;
@@ -171,6 +196,7 @@ void ChainDynamics::generalizedForces(const Eigen::VectorXd& x, const EndInputs&
                                       Eigen::VectorXd& out) {
   data_.dense.allocate(links());  // a no-op after construction with the semi-implicit integrator
   applyEnds(ends);
+  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
   computeKinematics(model_, data_, x, ends);
   computeExternalLoads(model_, data_, ends);
   computeJointTorques(model_, data_, x, with_dampers);
@@ -189,10 +215,15 @@ void ChainDynamics::paperCoordinates(const Eigen::VectorXd& x, Eigen::VectorXd& 
 
 void ChainDynamics::stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const {
   cable_dynamics::stateFromPaper(links(), q, qd, x);
+  if (model_.axial() && !model_.body().active) {
+    x.conservativeResize(stateSize());
+    x.tail(2 * links()).setZero();  // unstretched, at rest
+  }
   if (!model_.body().active) return;
   // An ROV body starts at rest in its configured attitude (load.body.initial_attitude; level: the
   // quaternion (0, 1, 0, 0), the half turn about x between its frame, z up, and the paper frame, z down).
   x.conservativeResize(stateSize());
+  if (model_.axial()) x.tail(2 * links()).setZero();  // unstretched, at rest
   x.segment<4>(StateLayout::bodyAttitude(links())) = model_.body().initial_attitude;
   x.segment<3>(StateLayout::bodyOmega(links())).setZero();
 }

@@ -44,6 +44,8 @@ ChainModel::ChainModel(const CableParams& params)
   load_.drag_area = params.load.drag_area;
   load_.coupling_stiffness = params.load.coupling_stiffness;
   load_.coupling_damping = params.load.coupling_damping;
+  axial_ = p.axial_stiffness.size() > 0 && p.axial_stiffness.maxCoeff() > 0.0;
+  last_locked_ = !(load_.inertia > 0.0) && !body_.active;
   // Padding lanes past the last link: zero length and mass, 1/I_P = 0; they add nothing anywhere.
   for (LinkConstants& c : lanes_) c = LinkConstants{};
   deploy(params.winch.stored_links);
@@ -102,6 +104,10 @@ void ChainModel::setLinkLength(int k, double l) {
       deployed ? LinkDrag::coefficients(rho, 2.0 * radius, p.drag_normal(k), p.drag_tangential(k)) : DragCoefficients{};
   c.drag_normal[i] = drag.normal;
   c.drag_tangential[i] = drag.tangential;
+  // EA / l and c_a / l of the link's stretch (a winch is refused with axial elasticity: l is configured).
+  const bool stretches = deployed && axial_ && !(last_locked_ && k == n_ - 1);
+  c.axial_stiffness[i] = stretches ? p.axial_stiffness(k) / l : 0.0;
+  c.axial_damping[i] = stretches ? p.axial_damping / l : 0.0;
 }
 
 void ChainModel::deploy(int first) {

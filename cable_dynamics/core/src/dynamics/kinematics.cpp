@@ -61,10 +61,14 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
     block.base_pos.set(i, pos);
     block.base_vel.set(i, vel);
     block.known_acc.set(i, acc);
-    const double l = model.of(k).length[i];
-    pos = pos + l * block.u[i];
-    vel = vel + l * block.axis_rate[i];
-    acc = acc + l * block.beta[i];
+    // The far end is l + s along u (s = 0 with rigid links: the same numbers to the last bit): it moves
+    // by (l + s) u' + s' u, and accelerates by (l + s) beta + 2 s' u' at zero angular and stretch
+    // accelerations.
+    const double lever = model.of(k).length[i] + block.stretch[i], rate = block.stretch_rate[i];
+    const Vec3 u = block.u[i], axis_rate = block.axis_rate[i];
+    pos = pos + lever * u;
+    vel = vel + lever * axis_rate + rate * u;
+    acc = acc + lever * block.beta[i] + (2.0 * rate) * axis_rate;
   }
   data.tip_position = toEigen(pos);
   data.tip_velocity = toEigen(vel);

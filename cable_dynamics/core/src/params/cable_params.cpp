@@ -14,6 +14,12 @@ double CableParams::deployedLength() const {
   return std::accumulate(link_lengths.begin() + winch.stored_links, link_lengths.end(), 0.0);
 }
 
+bool CableParams::stretches() const {
+  bool any = axial_stiffness > 0.0;
+  for (const SectionParams& s : sections) any = any || s.axial_stiffness > 0.0;
+  return any;
+}
+
 static std::vector<SectionParams> effectiveSections(const CableParams& params) {
   if (!params.sections.empty()) return params.sections;
   SectionParams s;
@@ -22,6 +28,7 @@ static std::vector<SectionParams> effectiveSections(const CableParams& params) {
   s.mass_per_length = params.mass_per_length;
   s.bending_rigidity = params.stiffness.bending_rigidity;
   s.torsional_rigidity = params.stiffness.torsional_rigidity;
+  s.axial_stiffness = params.axial_stiffness;
   s.drag_normal = params.fluid.drag_normal;
   s.drag_tangential = params.fluid.drag_tangential;
   s.added_mass = params.fluid.added_mass;
@@ -55,6 +62,8 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
   p.added_mass_per_length.resize(n);
   p.drag_normal.resize(n);
   p.drag_tangential.resize(n);
+  p.axial_stiffness.resize(n);
+  p.axial_damping = params.axial_damping;
   Eigen::VectorXd bending(n), torsional(n);
   for (int k = 0; k < n; ++k) {
     const SectionParams& sec = sections[p.section(k)];
@@ -65,6 +74,7 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
     p.added_mass_per_length(k) = sec.added_mass * rho * area;
     p.drag_normal(k) = sec.drag_normal;
     p.drag_tangential(k) = sec.drag_tangential;
+    p.axial_stiffness(k) = sec.axial_stiffness > 0.0 ? sec.axial_stiffness : params.axial_stiffness;
     bending(k) = sec.bending_rigidity;
     torsional(k) = sec.torsional_rigidity;
   }

@@ -50,6 +50,8 @@ void parseCable(Section cable, CableParams& p, CableRest& rest) {
     p.mass_per_length = rho * M_PI * 0.25 * p.diameter * p.diameter;
     rest.material_density = rho;
   }
+  p.axial_stiffness = cable.number("axial_stiffness", 0.0, 0.0, 1e13, false, "N");
+  p.axial_damping = cable.number("axial_damping", 0.0, 0.0, 1e13, false, "N s");
   if (cable.has("sections")) {
     rest.has_sections = true;
     rest.sections = cable.raw("sections");
@@ -244,6 +246,7 @@ void parseSections(const YAML::Node& rows, const CableRest& rest, CableParams& p
       throw ConfigError(row.path() + ".torsional_rigidity", formatNumber(s.torsional_rigidity),
                         "0 when cable.stiffness.torsion is given (one or the other)");
     }
+    s.axial_stiffness = row.number("axial_stiffness", p.axial_stiffness, 0.0, 1e13, false, "N");
     s.drag_normal = row.number("drag_normal", p.fluid.drag_normal, 0.0, 100.0, false, "");
     s.drag_tangential = row.number("drag_tangential", p.fluid.drag_tangential, 0.0, 100.0, false, "");
     s.added_mass = row.number("added_mass", p.fluid.added_mass, 0.0, 100.0, false, "");

@@ -1,6 +1,8 @@
 #include "cable_dynamics/params/input_gate.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -66,9 +68,52 @@ void checkRovBody(const CableParams& p) {
   }
 }
 
+/// Axial elasticity (cable.axial_stiffness, docs/MODEL.md section 10): what carries it so far, and an EA
+/// stiff enough for a cable (a stretch beyond 50 % under its own weight is no cable).
+void checkAxialElasticity(const CableParams& p) {
+  if (!p.stretches()) {
+    if (p.axial_damping > 0.0) {
+      throw ConfigError("cable.axial_damping", formatNumber(p.axial_damping), "0 without cable.axial_stiffness (rigid links)");
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < p.sections.size(); ++i) {
+    if (!(p.sections[i].axial_stiffness > 0.0)) {
+      throw ConfigError("cable.sections[" + std::to_string(i) + "].axial_stiffness", "0 (and no cable.axial_stiffness)",
+                        "> 0 N when another section stretches: give cable.axial_stiffness for the rest");
+    }
+  }
+  if (p.simulation.formulation != Formulation::kRecursive) {
+    throw ConfigError("simulation.formulation", "paper", "recursive with cable.axial_stiffness (the paper's model has rigid links)");
+  }
+  if (p.simulation.integrator != Integrator::kRk4) {
+    throw ConfigError("simulation.integrator", integratorName(p.simulation.integrator),
+                      "rk4 with cable.axial_stiffness (the implicit and semi-implicit steps do not carry the stretch yet)");
+  }
+  if (p.winch.enabled) {
+    throw ConfigError("winch", "enabled", "no winch with cable.axial_stiffness (paying out a stretching cable: not yet)");
+  }
+  // Under its own weight alone (the cable's submerged weight, or in air its weight; no load), the top of
+  // a hanging cable carries W = sum w_k l_k: a strain W / EA above 0.5 is refused.
+  const LinkProperties links = deriveLinkProperties(p);
+  const double weight = p.gravity * links.submerged_mass.cwiseAbs().sum();
+  const double least = links.axial_stiffness.minCoeff();
+  if (least < 2.0 * weight) {
+    throw ConfigError(p.sections.empty() ? "cable.axial_stiffness" : "cable.sections[" +
+                          std::to_string(links.section(static_cast<int>(std::distance(
+                              links.axial_stiffness.data(),
+                              std::min_element(links.axial_stiffness.data(), links.axial_stiffness.data() + links.n))))) +
+                          "].axial_stiffness",
+                      formatNumber(least) + " N",
+                      ">= " + formatNumber(2.0 * weight) +
+                          " N: twice the cable's own weight, or it would stretch beyond 50 % under it");
+  }
+}
+
 }  // namespace
 
 void checkConfigRules(const CableParams& p) {
+  checkAxialElasticity(p);
   const StiffnessParams& k = p.stiffness;
   if (k.bending_rigidity > 0.0 && (k.elevation > 0.0 || k.azimuth > 0.0)) {
     throw ConfigError("cable.stiffness.bending_rigidity", std::to_string(k.bending_rigidity),

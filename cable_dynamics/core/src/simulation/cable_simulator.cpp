@@ -23,7 +23,7 @@ CableSimulator::CableSimulator(const CableParams& params, SimulatorUse use)
       use_(use),
       dynamics_(params),
       scheme_(makeTimeScheme(params.simulation.integrator, params.links, params.simulation.rho_infinity,
-                             params.load.mode == LoadMode::kBody)),
+                             params.load.mode == LoadMode::kBody, params.stretches())),
       ends_(params.base, params.load, params.winch),
       limits_(stepLimits(*std::min_element(params.link_lengths.begin(), params.link_lengths.end()), params.gravity)),
       dt_(params.simulation.dt) {
@@ -196,6 +196,20 @@ void CableSimulator::finishWinchStep() {
   regrid_energy_ += energy_before - energy_after;
   dynamics_.followAzimuths(x_);
   start_balance_known_ = false;
+  scheme_->forget();
+}
+
+void CableSimulator::setState(const Eigen::VectorXd& x) {
+  if (x.size() != x_.size()) {
+    throw std::invalid_argument("state has " + std::to_string(x.size()) + " entries: expected " +
+                                std::to_string(x_.size()) + " (dynamics/state_layout.h)");
+  }
+  if (!x.allFinite()) throw std::invalid_argument("state has a non-finite value");
+  x_ = x;
+  dynamics_.followAzimuths(x_);
+  start_balance_known_ = false;
+  drift_reference_known_ = false;
+  largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
   scheme_->forget();
 }
 

@@ -253,6 +253,23 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
                       (row(across_stiffness) + tip_k) / transverse + tension * l / with_fluid,
                       "the bending of link " + link + " (bend springs and dampers, tension, drag)");
   }
+  if (params.stretches()) {
+    // Axial elasticity: the stretch of link k moves everything beyond its far end along its axis, so the
+    // axial modes are those of a chain of point masses (link k+1 rigidly between the stretches k and k+1;
+    // the load, or the ROV, beyond the last) on springs EA / l and dampers c_a / l. Gershgorin's row of
+    // the mass beyond stretch k: 2 (k_k + k_{k+1}) / m_{k+1}, and the same for the dampers.
+    const double load_mass = p.load_mass + (params.load.mode == LoadMode::kBody ? 0.0 : params.load.added_mass);
+    for (int k = first; k < n; ++k) {
+      const double l = p.length(k), spring = p.axial_stiffness(k) / l, damper = p.axial_damping / l;
+      const bool last = k + 1 == n;
+      if (last && !(load_mass > 0.0)) continue;  // locked: nothing beyond it (ChainModel::lastStretchLocked)
+      const double beyond = last ? load_mass : p.mass(k + 1);
+      const double next_spring = last ? 0.0 : p.axial_stiffness(k + 1) / p.length(k + 1);
+      const double next_damper = last ? 0.0 : p.axial_damping / p.length(k + 1);
+      stiffest.consider(2.0 * (damper + next_damper) / beyond, 2.0 * (spring + next_spring) / beyond,
+                        "the stretch of link " + std::to_string(k + 1) + " (axial stiffness and damping)");
+    }
+  }
   if (params.load.mode == LoadMode::kBody) {
     // The ROV body's own modes, each axis on its own: damping (linear, and quadratic at the flow) and the
     // station keeper's gains on the mass plus added mass; the restoring moment (W |r_g - r_b|) in roll and pitch.

@@ -25,7 +25,8 @@ StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& cu
   const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
   for (int i = 0; i < m_; ++i) {
     const int k = first_ + i;
-    length_(i) = model.get(&LinkConstants::length, k);
+    // With axial elasticity the lever to the far end is l + s; the link's own mass stays on its l.
+    length_(i) = model.get(&LinkConstants::length, k) + (problem.stretch.size() > k ? problem.stretch(k) : 0.0);
     weight_(i) = model.get(&LinkConstants::weight, k);  // the attachments' included
     weight_moment_(i) = model.get(&LinkConstants::weight_moment, k);
     // A winch pays out from the drum: the first deployed link leaves the base's clamp, with the spring of

@@ -34,12 +34,15 @@ struct ChainOutputs {
   Eigen::VectorXd spring_force;
   Eigen::VectorXd tension;       ///< (n) force along link k at its base end, + pulls towards the base [N]
                                  ///< (0 on a winch's drum; at the base link: the line pull)
+  /// Axial elasticity (empty with rigid links): each link's stretch s_k [m] (its strain is s_k / l_k,
+  /// its stretched length l_k + s_k) and the tension its stretch carries at its far end [N] (0: slack).
+  Eigen::VectorXd stretch, far_tension;
   Eigen::Vector3d load_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the load [N]
   Eigen::Vector3d base_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the base [N]
   Eigen::Vector3d coupling_force = Eigen::Vector3d::Zero();  ///< PD force of the anchor / ROV on the load [N]
   double kinetic_energy = 0.0;    ///< cable and load, without the fluid's added mass [J]
   double potential_energy = 0.0;  ///< gravity minus buoyancy, zero at the base's rest height [J]
-  double elastic_energy = 0.0;    ///< joint springs [J]
+  double elastic_energy = 0.0;    ///< joint springs and the links' stretch [J]
   double contact_energy = 0.0;    ///< the seabed's contact springs [J]
   SeabedReport seabed;            ///< contact forces, grounded length, touchdown (with a seabed)
 };
@@ -58,7 +61,7 @@ class ChainDynamics {
   /// What the ends set in the model and the data before any pass: the winch's link length, the clamp.
   /// Every evaluation calls it; the statics call it to see the model as the ends have it now.
   void applyEnds(const EndInputs& ends);
-  int stateSize() const { return StateLayout::size(model_.links(), model_.body().active); }
+  int stateSize() const { return StateLayout::size(model_.links(), model_.body().active, model_.axial()); }
   const ChainModel& model() const { return model_; }
   const LinkProperties& properties() const { return model_.properties(); }
   ChainData& data() { return data_; }

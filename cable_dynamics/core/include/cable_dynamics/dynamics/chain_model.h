@@ -86,6 +86,12 @@ class ChainModel {
   /// The seabed and its contact's constants (disabled when the config has no seabed).
   const SeabedContactConstants& seabedContact() const { return seabed_; }
   bool hasWinch() const { return has_winch_; }
+  /// Axial elasticity (cable.axial_stiffness > 0): each link stretches along its axis (its far end is
+  /// l + s from its base; docs/MODEL.md section 10), and the state carries s and s' per link.
+  bool axial() const { return axial_; }
+  /// With axial elasticity and no mass beyond the last link's far end (no load mass, no ROV body), the
+  /// last link's stretch has nothing to accelerate: it stays rigid (and carries no tension there).
+  bool lastStretchLocked() const { return axial_ && last_locked_; }
 
   /// Per-link constants, eight links a block; lanes past the last link hold a massless link of zero length.
   int blocks() const { return static_cast<int>(lanes_.size()); }
@@ -101,6 +107,8 @@ class ChainModel {
   int n_;
   int first_ = 0;
   bool has_winch_ = false;
+  bool axial_ = false;
+  bool last_locked_ = false;
   LinkProperties nominal_;     ///< every slot as configured (the drum's at the length they will have)
   LinkProperties properties_;  ///< as deployed now
   Formulation formulation_;

@@ -103,6 +103,8 @@ struct alignas(64) LinkConstants {
   double point_added2[kBlockLanes];     ///< sum m_pa s_p^2 [kg m^2]
   double drag_normal[kBlockLanes];      ///< 1/2 rho C_n d, times |v_n| v_n per length [kg/m^2]
   double drag_tangential[kBlockLanes];  ///< 1/2 rho C_t pi d, times |v_t| v_t per length [kg/m^2]
+  double axial_stiffness[kBlockLanes];  ///< EA / l, the stretch's spring [N/m] (0: rigid links)
+  double axial_damping[kBlockLanes];    ///< c_a / l, its damper on the stretch rate [N s/m]
 };
 
 /// Eight links' state-derived quantities and the recursion's intermediate results, rewritten by every
@@ -117,6 +119,12 @@ struct alignas(64) LinkBlock {
   Lanes3 base_vel;     ///< [m/s]
   Lanes3 known_acc;    ///< a0: base-end acceleration at zero angular accelerations [m/s^2]
   double twist_rate[kBlockLanes];  ///< sigma' [rad/s]
+  // Axial elasticity (docs/MODEL.md section 10): the link's far end is l + s from its base, along u.
+  // All zero with rigid links.
+  double stretch[kBlockLanes];       ///< s [m]
+  double stretch_rate[kBlockLanes];  ///< s' [m/s]
+  double axial_tension[kBlockLanes]; ///< the stretch's spring and damper, tension only [N]
+  double axial_loss[kBlockLanes];    ///< power its damper takes out [W]
   // External loads (external_loads.cpp, joint_torques.cpp).
   Lanes3 force;        ///< total external force on the link [N]
   Lanes3 moment;       ///< its first moment about the base end [N m]
@@ -137,6 +145,11 @@ struct alignas(64) LinkBlock {
   Lanes3 bias;                ///< F_k: force on the outboard part J_k = M_k d_k + F_k [N] (the same)
   // The recursion's forward pass.
   Lanes3 delta_acc;           ///< d_k, base-end acceleration less the known one [m/s^2]
+  // The stretch at the far end (axial elasticity): s'' = -stretch_bias - stretch_gain . d_q, with d_q
+  // the far end's acceleration (less its known part) at s'' = 0.
+  Lanes3 stretch_gain;                  ///< M u / (u^T M u) of the outboard part [-]
+  double stretch_bias[kBlockLanes];     ///< (T + u . F) / (u^T M u) [m/s^2]
+  double stretch_acc[kBlockLanes];      ///< s'' [m/s^2]
   Lanes3 omega_rate;          ///< angular acceleration [rad/s^2]
 };
 

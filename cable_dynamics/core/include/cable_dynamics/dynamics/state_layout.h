@@ -21,7 +21,13 @@ struct StateLayout {
   static constexpr int kBody = 7;
   static int bodyAttitude(int n) { return kPerLink * n + 2; }
   static int bodyOmega(int n) { return kPerLink * n + 6; }
-  static int size(int n, bool body = false) { return kPerLink * n + 2 + (body ? kBody : 0); }
+  /// With axial elasticity (cable.axial_stiffness > 0) x ends with each link's stretch s_k [m] (n), then
+  /// its rate [m/s] (n), after the body's entries when there is a body (docs/MODEL.md section 10).
+  static int stretch(int n, bool body, int k) { return kPerLink * n + 2 + (body ? kBody : 0) + k; }
+  static int stretchRate(int n, bool body, int k) { return stretch(n, body, n + k); }
+  static int size(int n, bool body = false, bool axial = false) {
+    return kPerLink * n + 2 + (body ? kBody : 0) + (axial ? 2 * n : 0);
+  }
   /// The part of a state of `size` entries that moves when slots [0, first) are on a winch's drum:
   /// everything from link `first` on, the accumulators and a body included (the tail of x).
   static int moving(Eigen::Index size, int first) { return static_cast<int>(size) - kPerLink * first; }

@@ -229,6 +229,7 @@ struct SectionParams {
   double mass_per_length = 0.6;     ///< in air [kg/m]
   double bending_rigidity = 0.0;    ///< EI [N m^2] (used when the cable's springs come from rigidities)
   double torsional_rigidity = 0.0;  ///< GJ [N m^2]
+  double axial_stiffness = 0.0;     ///< EA [N]; 0: the cable's (cable.axial_stiffness)
   double drag_normal = 1.2;         ///< Morison C_n [-]
   double drag_tangential = 0.01;    ///< skin friction C_t [-]
   double added_mass = 1.0;          ///< added-mass coefficient C_a normal to the cable [-]
@@ -284,6 +285,12 @@ struct CableParams {
   WinchParams winch;
   double diameter = 0.025;                ///< outer diameter [m]
   double mass_per_length = 0.6;           ///< in air [kg/m]
+  /// Axial stiffness EA [N]: 0 (the default) keeps the links rigid (inextensible); > 0 gives each link a
+  /// stretch along its axis (docs/MODEL.md section 10).
+  double axial_stiffness = 0.0;
+  /// Internal axial damping [N s]: the damper's force is axial_damping times the strain rate (as
+  /// MoorDyn's BA), acting only while the link is taut; 0 by default.
+  double axial_damping = 0.0;
   /// Sections along the configured cable from its base (empty: one uniform cable of the values above).
   /// Their lengths add up to the configured cable's length. With a winch the drum's slots take the
   /// first (base) section's properties.
@@ -303,6 +310,8 @@ struct CableParams {
   double totalLength() const;
   /// Deployed length at start [m] (totalLength() without a winch).
   double deployedLength() const;
+  /// true when the links stretch: cable.axial_stiffness or a section's is > 0.
+  bool stretches() const;
 };
 
 /// An attachment placed on its link (LinkProperties::attachments).
@@ -328,6 +337,8 @@ struct LinkProperties {
   Eigen::VectorXd added_mass_per_length;  ///< (n) normal added mass per length, C_a rho pi r^2 [kg/m]
   Eigen::VectorXd drag_normal;         ///< (n) Morison C_n of the link's section [-]
   Eigen::VectorXd drag_tangential;     ///< (n) skin friction C_t [-]
+  Eigen::VectorXd axial_stiffness;     ///< (n) EA of the link's section [N]; all 0: rigid links
+  double axial_damping = 0.0;          ///< internal axial damping [N s] (force per strain rate)
   Eigen::VectorXi section;             ///< (n) 0-based index of the link's section (0 without sections)
   std::vector<LinkAttachment> attachments;  ///< by link, in the order of arc length
   Eigen::VectorXd stiffness_elevation; ///< (n) per joint [N m/rad]

@@ -129,6 +129,10 @@ class CableSimulator {
   /// Sets the state from paper coordinates (3n each) [rad, rad/s]; throws std::invalid_argument on a
   /// wrong size or a non-finite value.
   void setPaperState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
+  /// Restores a state saved from state() (the same cable: dynamics/state_layout.h), at the present time,
+  /// with a new start for the energy bookkeeping; throws std::invalid_argument on a wrong size or a
+  /// non-finite value.
+  void setState(const Eigen::VectorXd& x);
 
   /// Live tuning: takes the fluid coefficients (`fluid.drag_normal`, `drag_tangential`, `added_mass`, and
   /// each section's, as the config loader resolved them) and the load coupling gains

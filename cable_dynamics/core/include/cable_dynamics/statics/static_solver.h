@@ -52,6 +52,9 @@ struct StaticProblem {
   /// LinkProperties::tip_clamp_axis.
   bool tip_clamp_moves = false;
   Eigen::Vector3d tip_clamp_axis = Eigen::Vector3d::UnitZ();
+  /// Axial elasticity: each link's stretch s_k [m] (n entries; empty: none), its far end l + s from its
+  /// base. solveStatics sets it itself for a model that stretches (the elastic iteration).
+  Eigen::VectorXd stretch;
 };
 
 struct StaticOptions {
@@ -69,6 +72,11 @@ struct StaticSolution {
   Eigen::VectorXd tension;  ///< (n) axial force at each link's base end, + pulling toward the base [N]
   Eigen::Matrix3Xd joint_force;  ///< (3 x n) force on the outboard part at each link's base end [N]
   Eigen::Vector3d tip_position = Eigen::Vector3d::Zero();  ///< [m]
+  Eigen::Vector3d tip_force = Eigen::Vector3d::Zero();  ///< the cable's force on the load [N]
+  /// Axial elasticity: each link's stretch at equilibrium, s_k = T_k l_k / EA_k with T_k the tension at
+  /// its far end [m] (n; empty with rigid links), and the fixed-point sweeps that found it.
+  Eigen::VectorXd stretch;
+  int elastic_sweeps = 0;
 };
 
 /// Solves for the static equilibrium. Supports the bending stiffness model and a limp cable (either
@@ -80,7 +88,8 @@ StaticSolution solveStatics(const ChainModel& model, const CurrentField& current
                             const StaticOptions& options = {});
 
 /// The solved shape at rest into the state x (dynamics/state_layout.h, already of its size): every
-/// link's axis and twist, zero angular velocities; the energy accumulators are left as they are.
+/// link's axis and twist, zero angular velocities, and the stretches at rest (axial elasticity: the
+/// state's last 2n entries); the energy accumulators are left as they are.
 void setRestState(const StaticSolution& solution, Eigen::VectorXd& x);
 
 }  // namespace cable_dynamics

@@ -1,5 +1,6 @@
 #include "cable_dynamics/dynamics/forces/power_balance.h"
 
+#include "cable_dynamics/dynamics/forces/axial_spring.h"
 #include "cable_dynamics/dynamics/joint_torques.h"
 
 namespace cable_dynamics {
@@ -37,7 +38,8 @@ double endsInputPower(const ChainModel& model, const ChainData& data, const EndI
 
 double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power) {
   const double body = model.body().active ? data.body.fluid_power : 0.0;  // after the solve (finishRovBody)
-  return data.drag_power + added_mass_power + damperPower(model, data) - data.contact_dissipation + body;
+  return data.drag_power + added_mass_power + damperPower(model, data) - data.contact_dissipation + body -
+         axialLoss(model, data);
 }
 
 }  // namespace cable_dynamics

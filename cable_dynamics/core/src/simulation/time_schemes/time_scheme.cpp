@@ -13,10 +13,11 @@ bool TimeScheme::evaluateEnd(ChainDynamics& dynamics, const EndInputs& ends, con
   return true;
 }
 
-std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity, bool body) {
+std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity, bool body,
+                                           bool axial) {
   switch (integrator) {
     case Integrator::kRk4:
-      return std::make_unique<Rk4Scheme>(StateLayout::size(links, body));
+      return std::make_unique<Rk4Scheme>(StateLayout::size(links, body, axial));
     case Integrator::kSemiImplicit:
       return std::make_unique<SemiImplicitScheme>(links);
     case Integrator::kImplicit:

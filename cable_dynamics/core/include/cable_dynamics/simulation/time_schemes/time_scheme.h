@@ -43,6 +43,8 @@ class TimeScheme {
 
 /// The scheme `integrator` for chains of `links` links (rho_infinity: the implicit scheme's, SimulationParams),
 /// with an ROV body on the tip when `body` (load.mode body: the state's last StateLayout::kBody entries).
-std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity = 1.0, bool body = false);
+/// With the links' stretch in the state when `axial` (RK4 only so far: the config gate refuses the others).
+std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, double rho_infinity = 1.0, bool body = false,
+                                           bool axial = false);
 
 }  // namespace cable_dynamics

@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// \brief The links' axial elasticity (docs/MODEL.md section 10): the law of one link's stretch, its
+///        value, its stored energy and its loss, side by side; and the passes over the chain that the
+///        dynamics call. A link's far end sits l + s along its axis from its base end: the stretch s [m]
+///        is a massless prismatic joint at the link's far end, the tension there is the law below.
+
+#include "cable_dynamics/dynamics/chain_data.h"
+#include "cable_dynamics/dynamics/chain_model.h"
+
+namespace cable_dynamics {
+
+/// T = k s + c s' while the link is stretched (s > 0), clipped at zero (the damper does not push), and 0
+/// when it is slack (s <= 0): a cable carries no compression. k = EA / l [N/m], c = c_a / l [N s/m].
+struct AxialSpring {
+  /// The tension [N] at stretch s [m] and rate s' [m/s].
+  static double tension(double k, double c, double s, double rate) {
+    const double t = k * s + c * rate;
+    return s > 0.0 && t > 0.0 ? t : 0.0;
+  }
+  /// Strain energy 1/2 k s^2 while stretched [J]: the tension's elastic part has this potential.
+  static double energy(double k, double s) { return s > 0.0 ? 0.5 * k * s * s : 0.0; }
+  /// The power the tension T takes out beyond the energy it stores [W], >= 0: T s' - k s s' while
+  /// stretched (c s'^2 when not clipped), 0 when slack.
+  static double loss(double k, double s, double rate, double tension) {
+    return s > 0.0 ? (tension - k * s) * rate : 0.0;
+  }
+};
+
+/// Each link's stretch and rate from the state x into the link blocks, and the tension and loss of the
+/// law above (zeros with rigid links, whose blocks keep zeros). O(n), no allocation.
+void computeAxialTensions(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x);
+
+/// The strain energy of every link's stretch at the stretches in `data` [J].
+double axialEnergy(const ChainModel& model, const ChainData& data);
+
+/// The power the stretches' dampers take out [W], >= 0.
+double axialLoss(const ChainModel& model, const ChainData& data);
+
+}  // namespace cable_dynamics
