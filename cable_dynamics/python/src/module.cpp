@@ -76,7 +76,11 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
                     "from the base, where the cable first touches the bottom [m]; -1 while nothing touches")
       .def_readonly("touchdown", &Snapshot::touchdown, "(3) that point [m]")
       .def_readonly("max_penetration", &Snapshot::max_penetration, "deepest penetration into the bottom [m]")
-      .def_readonly("contact_energy", &Snapshot::contact_energy, "the bottom's contact springs [J]");
+      .def_readonly("contact_energy", &Snapshot::contact_energy, "the bottom's contact springs [J]")
+      .def_readonly("strain", &Snapshot::strain, "(n) each link's strain, axial elasticity only (else empty) [-]")
+      .def_readonly("stretched_length", &Snapshot::stretched_length, "(n) each link's stretched length [m] (else empty)")
+      .def_readonly("far_tension", &Snapshot::far_tension, "(n) the tension at each link's far end [N] (else empty)")
+      .def_readonly("slack_links", &Snapshot::slack_links, "links whose stretch carries no tension");
 
   py::class_<ModelTerms>(m, "Model", "M q'' + h + G + elastic + D q' = Q at one state (paper coordinates).")
       .def_readonly("coordinates", &ModelTerms::coordinates, "(3n) names, joint_K_elevation/azimuth/torsion")

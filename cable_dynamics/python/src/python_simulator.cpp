@@ -71,6 +71,11 @@ Snapshot PythonSimulator::snapshot() {
   out.touchdown = bed.touchdown;
   out.max_penetration = bed.max_penetration;
   out.contact_energy = s.chain.contact_energy;
+  out.strain = s.chain.strain;
+  out.stretched_length = s.chain.stretch.size() > 0 ? Eigen::VectorXd(sim_.properties().length + s.chain.stretch)
+                                                    : Eigen::VectorXd();
+  out.far_tension = s.chain.far_tension;
+  out.slack_links = s.chain.slack_links;
   return out;
 }
 

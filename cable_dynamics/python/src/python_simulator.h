@@ -40,6 +40,10 @@ struct Snapshot {
   Eigen::Vector3d touchdown = Eigen::Vector3d::Zero();  ///< that point [m]
   double max_penetration = 0.0;        ///< [m]
   double contact_energy = 0.0;         ///< the contact springs' potential energy [J]
+  /// Axial elasticity (cable.axial_stiffness; empty with rigid links): each link's strain [-], its
+  /// stretched length [m], the tension at its far end [N], and how many links are slack.
+  Eigen::VectorXd strain, stretched_length, far_tension;
+  int slack_links = 0;
 };
 
 /// The paper model's terms at the present state (paperModelAt), sizes 3n and 3n x 3n.

@@ -54,7 +54,8 @@ bool allFinite(const cable_msgs::CableState& msg) {
          std::isfinite(msg.step_time) && std::isfinite(msg.real_time_factor) && std::isfinite(msg.lag) &&
          std::isfinite(msg.deployed_length) && std::isfinite(msg.line_pull) && std::isfinite(msg.winch_speed) &&
          std::isfinite(msg.grounded_length) && std::isfinite(msg.touchdown_arc_length) && finite(msg.touchdown) &&
-         std::isfinite(msg.max_penetration) && std::isfinite(msg.contact_energy) && finite(msg.seabed_force);
+         std::isfinite(msg.max_penetration) && std::isfinite(msg.contact_energy) && finite(msg.seabed_force) &&
+         finite(msg.strain) && std::isfinite(msg.max_tension);
 }
 
 bool allFinite(const geometry_msgs::WrenchStamped& msg) {

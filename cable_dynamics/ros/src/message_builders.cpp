@@ -156,6 +156,8 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
 
   out.state.tension.assign(n, 0.0);
   out.state.seabed_force.assign(params.seabed.enabled ? n : 0, 0.0);
+  out.state.strain.assign(params.stretches() ? n : 0, 0.0);
+  out.state.axial = params.stretches();
   out.state.deployed_links = static_cast<uint32_t>(n);
   out.state.header.frame_id = world_frame;
   out.wrench.header.frame_id = names.rov();           // about the ROV's origin, in its axes
@@ -335,6 +337,12 @@ void fillCableState(const OutputSource& source, const NodeStatus& status, const 
   for (std::size_t k = 0; k < msg.seabed_force.size() && k < static_cast<std::size_t>(bed.normal_force.size()); ++k) {
     msg.seabed_force[k] = bed.normal_force(k);
   }
+  for (std::size_t k = 0; k < msg.strain.size() && k < static_cast<std::size_t>(c.strain.size()); ++k) {
+    msg.strain[k] = c.strain(k);
+  }
+  msg.slack_links = static_cast<uint32_t>(c.slack_links);
+  msg.max_tension = s.largest_tension;
+  msg.snaps = static_cast<uint32_t>(s.snaps);
 }
 
 void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,

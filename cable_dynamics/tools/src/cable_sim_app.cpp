@@ -119,7 +119,7 @@ int writeStatics(CableSimulator& sim, const CableParams& params, const std::stri
   }
   SimulationSnapshot snapshot;
   sim.snapshot(snapshot);
-  CsvWriter writer(csv, params.links, CsvWriter::kDefaultFlushBytes, params.seabed.enabled);
+  CsvWriter writer(csv, params.links, CsvWriter::kDefaultFlushBytes, params.seabed.enabled, params.stretches());
   writer.writeHeader();
   if (!writer.writeRow(snapshot)) {
     err << "cable_sim: the static equilibrium has a non-finite value\n";
@@ -203,7 +203,7 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
     }
   }
   std::string record_error;
-  CsvWriter writer(csv, params.links, CsvWriter::kDefaultFlushBytes, params.seabed.enabled);
+  CsvWriter writer(csv, params.links, CsvWriter::kDefaultFlushBytes, params.seabed.enabled, params.stretches());
   writer.writeHeader();
   SimulationSnapshot snapshot;
   sim.snapshot(snapshot);

@@ -12,16 +12,16 @@ namespace {
 /// exponent of up to 3 digits with its sign ("-1.234567891e-308": 17).
 constexpr std::size_t kMaxNumberChars = 24;
 
-/// Values per row for n links: time, 3n coordinates, 3n rates, 3n ends, n tensions, 26 scalars, and with
-/// a seabed n normal forces.
-std::size_t valuesPerRow(int links, bool seabed) {
-  return 1 + (seabed ? 11 : 10) * static_cast<std::size_t>(links) + 26;
+/// Values per row for n links: time, 3n coordinates, 3n rates, 3n ends, n tensions, 26 scalars, with
+/// a seabed n normal forces, and with axial elasticity n strains and the count of slack links.
+std::size_t valuesPerRow(int links, bool seabed, bool axial) {
+  return 1 + (seabed ? 11 : 10) * static_cast<std::size_t>(links) + 26 + (axial ? links + 1 : 0);
 }
 
 /// Calls `visit(value)` for every value of a row, in the columns' order (csvColumns); stops at the first
 /// call that returns false and returns false then.
 template <class Visit>
-bool forEachValue(const SimulationSnapshot& s, bool seabed, Visit&& visit) {
+bool forEachValue(const SimulationSnapshot& s, bool seabed, bool axial, Visit&& visit) {
   const int n = static_cast<int>(s.q.size()) / 3;
   if (!visit(s.time)) return false;
   for (int i = 0; i < 3 * n; ++i) {
@@ -60,12 +60,18 @@ bool forEachValue(const SimulationSnapshot& s, bool seabed, Visit&& visit) {
       if (!visit(k < bed.normal_force.size() ? bed.normal_force(k) : 0.0)) return false;
     }
   }
+  if (axial) {
+    for (int k = 0; k < n; ++k) {
+      if (!visit(k < s.chain.strain.size() ? s.chain.strain(k) : 0.0)) return false;
+    }
+    if (!visit(static_cast<double>(s.chain.slack_links))) return false;
+  }
   return true;
 }
 
 }  // namespace
 
-std::vector<std::string> csvColumns(int links, bool seabed) {
+std::vector<std::string> csvColumns(int links, bool seabed, bool axial) {
   std::vector<std::string> c{"time"};
   for (int i = 0; i < 3 * links; ++i) c.push_back(coordinateName(i));
   for (int i = 0; i < 3 * links; ++i) c.push_back(coordinateName(i) + "_rate");
@@ -83,22 +89,27 @@ std::vector<std::string> csvColumns(int links, bool seabed) {
   if (seabed) {
     for (int k = 1; k <= links; ++k) c.push_back("seabed_normal" + std::to_string(k));
   }
+  if (axial) {
+    for (int k = 1; k <= links; ++k) c.push_back("strain" + std::to_string(k));
+    c.push_back("slack_links");
+  }
   return c;
 }
 
-CsvWriter::CsvWriter(std::ostream& out, int links, std::size_t flush_bytes, bool seabed)
+CsvWriter::CsvWriter(std::ostream& out, int links, std::size_t flush_bytes, bool seabed, bool axial)
     : out_(out),
       links_(links),
       seabed_(seabed),
+      axial_(axial),
       flush_bytes_(flush_bytes),
-      row_bytes_(valuesPerRow(links, seabed) * (kMaxNumberChars + 1) + 1),
+      row_bytes_(valuesPerRow(links, seabed, axial) * (kMaxNumberChars + 1) + 1),
       buffer_(flush_bytes + row_bytes_) {}
 
 CsvWriter::~CsvWriter() { flush(); }
 
 void CsvWriter::writeHeader() {
   std::string line;
-  const std::vector<std::string> columns = csvColumns(links_, seabed_);
+  const std::vector<std::string> columns = csvColumns(links_, seabed_, axial_);
   for (std::size_t i = 0; i < columns.size(); ++i) line += (i ? "," : "") + columns[i];
   line += "\n";
   handOver();
@@ -112,9 +123,9 @@ bool CsvWriter::writeRow(const SimulationSnapshot& s) {
   }
   // Nothing of a row with a non-finite value is written: check first, then format (the check is a small
   // fraction of the formatting).
-  if (!forEachValue(s, seabed_, [](double x) { return std::isfinite(x); })) return false;
+  if (!forEachValue(s, seabed_, axial_, [](double x) { return std::isfinite(x); })) return false;
   bool first = true;
-  forEachValue(s, seabed_, [&](double x) {
+  forEachValue(s, seabed_, axial_, [&](double x) {
     if (!first) append(',');
     first = false;
     append(x);

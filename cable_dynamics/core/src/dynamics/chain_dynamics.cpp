@@ -135,16 +135,23 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   out.tension.resize(n);
   out.tension.setZero();
   for (int k = first; k < n; ++k) out.tension(k) = -data_.joint_force.col(k).dot(l.get(&LinkBlock::u, k));
+  out.slack_links = 0;
   if (model_.axial()) {
     out.stretch.setZero(n);
     out.far_tension.setZero(n);
+    out.strain.setZero(n);
     for (int k = first; k < n; ++k) {
-      out.stretch(k) = l.get(&LinkBlock::stretch, k);
+      const double s = l.get(&LinkBlock::stretch, k);
+      out.stretch(k) = s;
       out.far_tension(k) = l.get(&LinkBlock::axial_tension, k);
+      out.strain(k) = s / model_.get(&LinkConstants::length, k);
+      const bool locked = k == n - 1 && model_.lastStretchLocked();
+      if (!locked && s < 0.0) ++out.slack_links;
     }
   } else {
     out.stretch.resize(0);
     out.far_tension.resize(0);
+    out.strain.resize(0);
   }
   out.load_force = data_.load_force;
   out.base_force = -data_.joint_force.col(first);

@@ -84,6 +84,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
       t.drag_vv.setZero();
     }
     if (contact.enabled()) linearizeContact(model, data, k, t, contact_[k]);
+    t.lever = model.get(&LinkConstants::length, k) + blocks.get(&LinkBlock::stretch, k);
   }
   // Geometric stiffness: the moment of everything outboard about link k's base end, u x G with
   // G = l F_outboard + (the link's own first moment), turns with the link: dtau = -(G.u) P dtheta - ...;
@@ -93,9 +94,8 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   Eigen::Vector3d outboard = data.load_external;
   for (int k = n - 1; k >= first && !use_last_tension; --k) {
     StiffLinkTerms& t = links_[k];
-    const double l = model.get(&LinkConstants::length, k);
     const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
-    const Eigen::Vector3d g = l * outboard + blocks.get(&LinkBlock::moment, k);
+    const Eigen::Vector3d g = t.lever * outboard + blocks.get(&LinkBlock::moment, k);
     t.geometric = std::max(0.0, g.dot(u));
     outboard += blocks.get(&LinkBlock::force, k);
   }
@@ -162,7 +162,7 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
 void StiffArticulatedBody::geometricFromLastTension(const ChainModel& model) {
   for (int k = model.firstLink(); k < model.links(); ++k) {
     const double far = k + 1 < model.links() ? links_[k + 1].tension : tip_tension_;
-    links_[k].geometric = std::max(0.0, 0.5 * model.get(&LinkConstants::length, k) * (links_[k].tension + far));
+    links_[k].geometric = std::max(0.0, 0.5 * links_[k].lever * (links_[k].tension + far));
   }
 }
 
@@ -170,8 +170,37 @@ void StiffArticulatedBody::clearExtra() {
   for (StiffLinkTerms& t : links_) {
     t.extra_torque.setZero();
     t.extra_force.setZero();
+    t.stretch_extra = 0.0;
   }
   load_extra_.setZero();
+}
+
+void StiffArticulatedBody::linearizeStretches(const ChainModel& model, const ChainData& data, double horizon) {
+  for (int k = model.firstLink(); k < model.links(); ++k) {
+    StiffLinkTerms& t = links_[k];
+    // The stretch's law (forces/axial_spring.h): its k and c unless the link stays clearly slack over the
+    // step's horizon (s + h s' below -0.1 % of its length, the snap counter's margin); 0 there. With the
+    // law's own derivatives (0 while slack) a link snapping taut within a step, or a light link ringing
+    // about s = 0 after a snap, was an explicit step at h omega of hundreds for its stiff spring, and
+    // diverged; with k everywhere (a W-method keeps its order with any matrix, but not its accuracy at
+    // h omega = 300) a falling mass was braked by a spring not yet there: the snap's peak came 14 % low
+    // (the snap test at 10 ms).
+    const int lane = LinkBlocks::lane(k);
+    const LinkBlock& block = data.links.of(k);
+    const LinkConstants& constants = model.of(k);
+    const double s = block.stretch[lane], rate = block.stretch_rate[lane];
+    const bool taut = s + std::max(0.0, horizon * rate) > -1e-3 * constants.length[lane];
+    t.stretch_spring = taut ? constants.axial_stiffness[lane] : 0.0;
+    t.stretch_damper = taut ? constants.axial_damping[lane] : 0.0;
+  }
+}
+
+void StiffArticulatedBody::addStretchJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+                                                   const Eigen::VectorXd& stretch, const Eigen::VectorXd& rate) {
+  for (int k = model.firstLink(); k < model.links(); ++k) {
+    StiffLinkTerms& t = links_[k];
+    t.stretch_extra += stiffness_factor * t.stretch_spring * stretch(k) + damping_factor * t.stretch_damper * rate(k);
+  }
 }
 
 CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
@@ -216,6 +245,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
   const LinkBlocks& blocks = data.links;
   const LoadConstants& load = model.load();
   const double cd = damping_weight, ck = stiffness_weight;
+  const bool axial = model.axial();
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   // The load, a point at the tip: no rotational inertia, its mass plus the weighted drag and coupling.
   Eigen::Matrix3d child_rr = Eigen::Matrix3d::Zero(), child_rv = Eigen::Matrix3d::Zero();
@@ -236,9 +266,33 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     const int i = LinkBlocks::lane(k);
     const double l = c.length[i];
     const Eigen::Vector3d u = toEigen(block.u[i]);
+    if (axial && !(k == n - 1 && model.lastStretchLocked())) {
+      // The prismatic joint at the far end (axial elasticity): the outboard part passes along u the
+      // stretch's tension and its impedance, u . J_v = -(T - extra) - (cd c + ck k) s'', so s'' =
+      // -(U_v . d_far + U_r . alpha + u . p_v + T - extra) / D with U_r = rv u, U_v = vv u, D = u^T vv u +
+      // cd c + ck k, which leaves I - U U^T / D and p - U (u . p_v + T - extra) / D at the rigid far end.
+      t.stretch_rot = child_rv * u;
+      t.stretch_lin = child_vv * u;
+      t.stretch_inverse = 1.0 / (u.dot(t.stretch_lin) + cd * t.stretch_damper + ck * t.stretch_spring);
+      t.stretch_bias = u.dot(child_pv) + block.axial_tension[i] - t.stretch_extra;
+      const Eigen::Vector3d r = t.stretch_inverse * t.stretch_rot, v = t.stretch_inverse * t.stretch_lin;
+      child_rr -= r * t.stretch_rot.transpose();
+      child_rv -= r * t.stretch_lin.transpose();
+      child_vv -= v * t.stretch_lin.transpose();
+      child_pr -= t.stretch_bias * r;
+      child_pv -= t.stretch_bias * v;
+      child_rr = symmetrized(child_rr);
+      child_vv = symmetrized(child_vv);
+    } else {
+      t.stretch_inverse = 0.0;  // rigid links, or a locked last stretch
+      t.stretch_rot.setZero();
+      t.stretch_lin.setZero();
+      t.stretch_bias = 0.0;
+    }
+    const double lever = axial ? t.lever : l;  // base end to far end
     // The outboard part's inertia and bias moved from the far end to the base end: with R = l [u]x,
     // rr' = rr - rv R + R rv^T - R vv R (R rv^T = -(rv R)^T), rv' = rv + R vv, torque' = torque + R force.
-    const Eigen::Matrix3d R = l * skew(u);
+    const Eigen::Matrix3d R = lever * skew(u);
     const Eigen::Matrix3d r_vv = R * child_vv;
     const Eigen::Matrix3d rv_r = child_rv * R;
     Eigen::Matrix3d a_rr = child_rr - rv_r - rv_r.transpose() - r_vv * R;
@@ -303,8 +357,12 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     t.angular_acc = alpha;
     t.delta_acc = d;
     if (k == first) base_force_ = child_rv.transpose() * nu + child_pv;
-    const double l = model.get(&LinkConstants::length, k);
-    d -= l * blocks.get(&LinkBlock::u, k).cross(alpha);  // d_{k+1} = d_k + l alpha x u
+    const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
+    d -= (axial ? t.lever : model.get(&LinkConstants::length, k)) * u.cross(alpha);  // the far end: + l alpha x u
+    if (axial) {  // and its stretch (zero when locked: stretch_inverse 0)
+      t.stretch_acc = -t.stretch_inverse * (t.stretch_lin.dot(d) + t.stretch_rot.dot(alpha) + t.stretch_bias);
+      d += t.stretch_acc * u;
+    }
   }
   tip_delta_ = d;
   // Joint forces from the tip inwards, J_k = J_{k+1} + (the link's inertia force less its loads), for

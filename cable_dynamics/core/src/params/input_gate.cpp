@@ -68,7 +68,7 @@ void checkRovBody(const CableParams& p) {
   }
 }
 
-/// Axial elasticity (cable.axial_stiffness, docs/MODEL.md section 10): what carries it so far, and an EA
+/// Axial elasticity (cable.axial_stiffness, docs/MODEL.md section 12): what carries it so far, and an EA
 /// stiff enough for a cable (a stretch beyond 50 % under its own weight is no cable).
 void checkAxialElasticity(const CableParams& p) {
   if (!p.stretches()) {
@@ -86,9 +86,9 @@ void checkAxialElasticity(const CableParams& p) {
   if (p.simulation.formulation != Formulation::kRecursive) {
     throw ConfigError("simulation.formulation", "paper", "recursive with cable.axial_stiffness (the paper's model has rigid links)");
   }
-  if (p.simulation.integrator != Integrator::kRk4) {
+  if (p.simulation.integrator == Integrator::kSemiImplicit) {
     throw ConfigError("simulation.integrator", integratorName(p.simulation.integrator),
-                      "rk4 with cable.axial_stiffness (the implicit and semi-implicit steps do not carry the stretch yet)");
+                      "rk4 or implicit with cable.axial_stiffness (the semi-implicit step does not carry the stretch)");
   }
   if (p.winch.enabled) {
     throw ConfigError("winch", "enabled", "no winch with cable.axial_stiffness (paying out a stretching cable: not yet)");

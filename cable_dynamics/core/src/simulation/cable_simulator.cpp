@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cable_dynamics/dynamics/forces/axial_spring.h"
 #include "cable_dynamics/dynamics/frames.h"
 #include "cable_dynamics/dynamics/rov_body.h"
 #include "cable_dynamics/params/input_gate.h"
@@ -32,6 +33,7 @@ CableSimulator::CableSimulator(const CableParams& params, SimulatorUse use)
   const int size = dynamics_.stateSize();
   x_.setZero(size);
   x_start_.setZero(size);
+  slack_.assign(params.links, 1);
   q_.setZero(3 * params.links);
   qd_.setZero(3 * params.links);
   reset();
@@ -45,12 +47,15 @@ void CableSimulator::reset() {
   deployConfigured();
   links_added_ = links_removed_ = 0;
   regrid_energy_ = 0.0;
+  largest_tension_ = 0.0;
+  snaps_ = 0;
   dynamics_.current() = CurrentField(params_.fluid);
   setPaperState(q, qd);
   if (params_.initial.mode == InitialMode::kEquilibrium) {
     const StaticSolution s = resetToEquilibrium();
     if (!s.converged) throw std::runtime_error("initial.mode = equilibrium: " + s.message);
   }
+  watchStretches(false);  // the start's slack links and tension
   commanded_thrust_.setZero();
   applied_thrust_.setZero();
   keeper_integral_.setZero();
@@ -127,6 +132,7 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   if (!s.converged) return s;
   const int n = links();
   setRestState(s, x_);
+  watchStretches(false);
   x_(StateLayout::dissipated(n)) = 0.0;
   x_(StateLayout::workInput(n)) = 0.0;
   // Azimuths continue from the solved axes (nearest branch to the old ones); a new start for the
@@ -199,6 +205,28 @@ void CableSimulator::finishWinchStep() {
   scheme_->forget();
 }
 
+void CableSimulator::watchStretches(bool count_snaps) {
+  const ChainModel& model = dynamics_.model();
+  if (!model.axial()) return;
+  const int n = links();
+  const bool body = hasBody();
+  for (int k = model.firstLink(); k < n; ++k) {
+    if (k == n - 1 && model.lastStretchLocked()) continue;
+    const int i = LinkBlocks::lane(k);
+    const double s = x_(StateLayout::stretch(n, body, k)), rate = x_(StateLayout::stretchRate(n, body, k));
+    const LinkConstants& c = model.of(k);
+    largest_tension_ = std::max(largest_tension_, AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, rate));
+    // A snap: a link shorter than unstretched by more than 0.1 % of its length that comes taut. The
+    // margin keeps a taut line's light links, ringing about s = 0 after a snap, from counting each crossing.
+    if (s < -1e-3 * c.length[i]) {
+      slack_[k] = 1;
+    } else if (s >= 0.0) {
+      if (count_snaps && slack_[k]) ++snaps_;
+      slack_[k] = 0;
+    }
+  }
+}
+
 void CableSimulator::setState(const Eigen::VectorXd& x) {
   if (x.size() != x_.size()) {
     throw std::invalid_argument("state has " + std::to_string(x.size()) + " entries: expected " +
@@ -207,6 +235,7 @@ void CableSimulator::setState(const Eigen::VectorXd& x) {
   if (!x.allFinite()) throw std::invalid_argument("state has a non-finite value");
   x_ = x;
   dynamics_.followAzimuths(x_);
+  watchStretches(false);  // the new state's slack links, without counting a snap
   start_balance_known_ = false;
   drift_reference_known_ = false;
   largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
@@ -313,6 +342,7 @@ StepReport CableSimulator::step() {
       time_ = t0 + dt_;  // no drift from summing the pieces
       dynamics_.followAzimuths(x_);
       if (hasWinch()) finishWinchStep();
+      watchStretches(true);
       return report;
     }
     x_.tail(moving) = x_start_.tail(moving);
@@ -352,6 +382,8 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.total_energy = out.chain.kinetic_energy + out.chain.potential_energy + out.chain.elastic_energy + out.chain.contact_energy +
                      out.dissipated_energy - out.work_input;
   out.first_link = firstLink();
+  out.largest_tension = largest_tension_;
+  out.snaps = snaps_;
   out.deployed_length = deployedLength();
   out.winch_speed = hasWinch() ? ends_.winch().motion().speed : 0.0;
   out.line_pull = out.chain.tension(out.first_link);

@@ -37,6 +37,8 @@ struct ChainOutputs {
   /// Axial elasticity (empty with rigid links): each link's stretch s_k [m] (its strain is s_k / l_k,
   /// its stretched length l_k + s_k) and the tension its stretch carries at its far end [N] (0: slack).
   Eigen::VectorXd stretch, far_tension;
+  Eigen::VectorXd strain;  ///< (n) s_k / l_k [-] (empty with rigid links)
+  int slack_links = 0;     ///< slack links: shorter than unstretched (s_k < 0; a locked last link not counted)
   Eigen::Vector3d load_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the load [N]
   Eigen::Vector3d base_force = Eigen::Vector3d::Zero();  ///< force the cable exerts on the base [N]
   Eigen::Vector3d coupling_force = Eigen::Vector3d::Zero();  ///< PD force of the anchor / ROV on the load [N]

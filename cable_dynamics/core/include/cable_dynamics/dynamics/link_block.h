@@ -119,7 +119,7 @@ struct alignas(64) LinkBlock {
   Lanes3 base_vel;     ///< [m/s]
   Lanes3 known_acc;    ///< a0: base-end acceleration at zero angular accelerations [m/s^2]
   double twist_rate[kBlockLanes];  ///< sigma' [rad/s]
-  // Axial elasticity (docs/MODEL.md section 10): the link's far end is l + s from its base, along u.
+  // Axial elasticity (docs/MODEL.md section 12): the link's far end is l + s from its base, along u.
   // All zero with rigid links.
   double stretch[kBlockLanes];       ///< s [m]
   double stretch_rate[kBlockLanes];  ///< s' [m/s]

@@ -22,7 +22,7 @@ struct StateLayout {
   static int bodyAttitude(int n) { return kPerLink * n + 2; }
   static int bodyOmega(int n) { return kPerLink * n + 6; }
   /// With axial elasticity (cable.axial_stiffness > 0) x ends with each link's stretch s_k [m] (n), then
-  /// its rate [m/s] (n), after the body's entries when there is a body (docs/MODEL.md section 10).
+  /// its rate [m/s] (n), after the body's entries when there is a body (docs/MODEL.md section 12).
   static int stretch(int n, bool body, int k) { return kPerLink * n + 2 + (body ? kBody : 0) + k; }
   static int stretchRate(int n, bool body, int k) { return stretch(n, body, n + k); }
   static int size(int n, bool body = false, bool axial = false) {

@@ -61,6 +61,15 @@ struct StiffLinkTerms {
   Eigen::Matrix3d own_vr = Eigen::Matrix3d::Zero(), own_vv = Eigen::Matrix3d::Zero();
   Eigen::Vector3d own_bias = Eigen::Vector3d::Zero();  ///< [N]
   double tension = 0.0;  ///< at the base end, -J_k . u_k, from the last solve() [N]
+  // Axial elasticity: the prismatic joint at the far end (docs/MODEL.md section 12) with its impedance
+  // cd c + ck k (c, k: the stretch law's derivatives, 0 while slack).
+  double lever = 0.0;          ///< l + s, base end to far end [m]
+  double stretch_spring = 0.0, stretch_damper = 0.0;  ///< k = EA / l [N/m], c = c_a / l [N s/m]; 0 while it stays slack
+  double stretch_extra = 0.0;  ///< added to the joint's force along u, as a tension's decrease [N]
+  Eigen::Vector3d stretch_rot = Eigen::Vector3d::Zero(), stretch_lin = Eigen::Vector3d::Zero();  ///< rv u, vv u
+  double stretch_inverse = 0.0;  ///< 1 / (u^T vv u + cd c + ck k) [1/kg]
+  double stretch_bias = 0.0;     ///< u . p_v + T - extra [N]
+  double stretch_acc = 0.0;      ///< s'' [m/s^2]
 };
 
 /// A link's seabed stiffness over (rotation, base-end displacement), laid out as the drag's damping
@@ -86,8 +95,17 @@ class StiffArticulatedBody {
   /// `use_last_tension`): the other terms are kept.
   void geometricFromLastTension(const ChainModel& model);
 
+  /// Axial elasticity: each stretch's spring and damper for the matrix at the state of `data`, kept until
+  /// the next call (a step's two stages share them: switched between its stages, a link coming taut made
+  /// the step unstable). A link stays out while it is clearly slack over `horizon` [s] (the step).
+  void linearizeStretches(const ChainModel& model, const ChainData& data, double horizon);
   /// Sets the extra right-hand side to zero.
   void clearExtra();
+  /// Axial elasticity: adds stiffness_factor k r + damping_factor c r' (each link's stretch law's
+  /// derivatives from linearize()) to the right-hand side of each stretch, r being a stretch (n) [m] and
+  /// r' a stretch rate (n) [m/s].
+  void addStretchJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+                               const Eigen::VectorXd& stretch, const Eigen::VectorXd& rate);
   /// Adds stiffness_factor K r + damping_factor D r to the right-hand side, as generalized forces:
   /// r is a rotation (or rotation rate) of each link, `rotation` (3 x n) [rad or rad/s], with
   /// `base_rotation` the base clamp's and `tip_rotation` a clamped tip's (the springs act on the

@@ -255,7 +255,7 @@ struct SeabedGrid {
   Eigen::MatrixXd depth;  ///< (rows = y points, cols = x points, at least 2 x 2) [m]
 };
 
-/// The seabed (docs/MODEL.md section 10): a flat bottom at `depth`, or bathymetry on a grid; a normal
+/// The seabed (docs/MODEL.md section 12): a flat bottom at `depth`, or bathymetry on a grid; a normal
 /// spring-damper per unit length at points along each link, and regularized Coulomb friction.
 struct SeabedParams {
   bool enabled = false;
@@ -286,7 +286,7 @@ struct CableParams {
   double diameter = 0.025;                ///< outer diameter [m]
   double mass_per_length = 0.6;           ///< in air [kg/m]
   /// Axial stiffness EA [N]: 0 (the default) keeps the links rigid (inextensible); > 0 gives each link a
-  /// stretch along its axis (docs/MODEL.md section 10).
+  /// stretch along its axis (docs/MODEL.md section 12).
   double axial_stiffness = 0.0;
   /// Internal axial damping [N s]: the damper's force is axial_damping times the strain rate (as
   /// MoorDyn's BA), acting only while the link is taut; 0 by default.

@@ -46,6 +46,8 @@ struct SimulationSnapshot {
   Eigen::VectorXd q;       ///< (3n) paper coordinates [rad]
   Eigen::VectorXd qd;      ///< (3n) their rates [rad/s]
   ChainOutputs chain;      ///< ends, tension, forces, energies
+  double largest_tension = 0.0;  ///< axial elasticity: CableSimulator::largestTension() [N]
+  long snaps = 0;                ///< axial elasticity: CableSimulator::snaps()
   Eigen::Matrix3Xd axes;   ///< (3 x n) unit axis of each link, base end to far end [-]
   Eigen::VectorXd twists;  ///< (n) each link's total twist about the vertical, sigma = psi + phi [rad]
   double dissipated_energy = 0.0;  ///< taken out by drag, added mass, dampers and the seabed since reset [J]
@@ -232,6 +234,11 @@ class CableSimulator {
   double energyRise() const { return scheme_->balancesEnergy() ? -1.0 : energy_rise_; }
   /// Steps since reset that needed substeps.
   long retriedSteps() const { return retried_steps_; }
+  /// Axial elasticity (0 with rigid links): the largest tension a link's stretch has carried at a step's
+  /// end since the last reset [N], and the snaps since then: a link shorter than unstretched by more than
+  /// 0.1 % of its length (slack) that comes taut (s >= 0), judged at the steps' ends.
+  double largestTension() const { return largest_tension_; }
+  long snaps() const { return snaps_; }
 
   /// The recommended RK4 time step: half the stability limit estimated from the stiffest mode [s]
   /// (stable_step.h; a dt up to the limit itself is accepted).
@@ -268,6 +275,11 @@ class CableSimulator {
   double energy_drift_ = 0.0;           ///< [-]
   double energy_rise_ = 0.0;            ///< [-], schemes not judged by the balance
   long retried_steps_ = 0;
+  double largest_tension_ = 0.0;  ///< [N]
+  long snaps_ = 0;
+  std::vector<char> slack_;  ///< (n) each link slack at the last step's end (axial elasticity)
+  /// After an accepted step (axial elasticity): the largest tension and the snaps (no allocation).
+  void watchStretches(bool count_snaps);
   long links_added_ = 0, links_removed_ = 0;
   double regrid_energy_ = 0.0;          ///< [J]
   Eigen::VectorXd x_, x_start_;         ///< (StateLayout::size(n)) the state, and at the step's start

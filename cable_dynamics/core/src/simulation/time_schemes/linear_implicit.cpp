@@ -52,9 +52,12 @@ double gammaFor(double rho_infinity) {
 
 }  // namespace
 
-LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity, bool body)
-    : gamma_(gammaFor(rho_infinity)), solver_(links), body_(body) {
-  stage_.setZero(StateLayout::size(links, body));
+LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity, bool body, bool axial)
+    : gamma_(gammaFor(rho_infinity)), solver_(links), body_(body), axial_(axial) {
+  stage_.setZero(StateLayout::size(links, body, axial));
+  for (Eigen::VectorXd* v : {&stretch_rate_, &stretch_spin1_, &stretch_turn1_, &stretch_rate2_, &stretch_scratch_, &stretch_zero_}) {
+    v->setZero(axial ? links : 0);
+  }
   for (Eigen::Matrix3Xd* m : {&omega_, &turn1_, &spin1_, &shift1_, &push1_, &rotation_, &translation_}) m->setZero(3, links);
 }
 
@@ -96,6 +99,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   // kw1 = h a1, kphi1 = h (w_n + g kw1).
   const EndInputs start = end_conditions.at(t);
   f.computeLoads(x, start);
+  if (axial_) solver_.linearizeStretches(model, data, h);  // for both stages
   // W may be any approximation (a W-method keeps its order whatever the Jacobian): stage 1 reuses the last
   // step's stage-2 terms, linearized O(h) away, and saves a linearization a step. Its geometric stiffness
   // is refreshed from the stage-2 solve's tensions, though: left at stage 1's (whose right-hand side
@@ -118,6 +122,10 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
       start.load_coupled ? Eigen::Vector3d(data.tip_velocity - start.target_velocity) : data.tip_velocity;
   const Eigen::Vector3d tip_clamp_rate = data.tip_clamp_omega;
   solver_.addJacobianTimes(model, -gh, 0.0, omega_, clamp_rate, tip_clamp_rate, translation_, tip_rate1);
+  if (axial_) {  // the stretches as the rotations: -g h K s'_n
+    for (int k = 0; k < n; ++k) stretch_rate_(k) = x(StateLayout::stretchRate(n, body_, k));
+    solver_.addStretchJacobianTimes(model, -gh, 0.0, stretch_rate_, stretch_zero_);
+  }
   solver_.solve(model, data, gh, gh * gh);
   if (body_) finishRovBody(model.body(), data.tip_known_acc + solver_.tipDelta(), f.data().body);
   const StagePower power1 = stagePower(model, data, start);
@@ -137,6 +145,14 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     shift1_.col(k) = h * (translation_.col(k) + g * push1_.col(k));  // the base end's displacement [m]
     turnFrame(stage_, k, turn1_.col(k));
     stage_.segment<3>(StateLayout::omega(k)) = omega_.col(k) + spin1_.col(k);
+  }
+  if (axial_) {  // ks'1 = h s''_1, ks1 = h (s'_n + g ks'1)
+    for (int k = first; k < n; ++k) {
+      stretch_spin1_(k) = h * solver_.link(k).stretch_acc;
+      stretch_turn1_(k) = h * (stretch_rate_(k) + g * stretch_spin1_(k));
+      stage_(StateLayout::stretch(n, body_, k)) += stretch_turn1_(k);
+      stage_(StateLayout::stretchRate(n, body_, k)) += stretch_spin1_(k);
+    }
   }
   const Eigen::Vector3d tip_push1 = h * solver_.tipDelta();
   const Eigen::Vector3d tip_shift1 = h * tip_rate1 + g * h * tip_push1;
@@ -168,6 +184,14 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   solver_.addJacobianTimes(model, g, 0.0, rotation_, clamp2, tip_clamp2, translation_, 2.0 * tip_shift1 - tip_rate2);
   solver_.addJacobianTimes(model, 0.0, 2.0 * g, spin1_, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), push1_,
                            tip_push1);
+  if (axial_) {  // as the rotations: r2 = h s'_1 - 2 g h ks'1; g K (2 ks1 - r2) + 2 g D ks'1
+    for (int k = first; k < n; ++k) {
+      stretch_rate2_(k) = h * stage_(StateLayout::stretchRate(n, body_, k)) - 2.0 * g * h * stretch_spin1_(k);
+      stretch_scratch_(k) = 2.0 * stretch_turn1_(k) - stretch_rate2_(k);
+    }
+    solver_.addStretchJacobianTimes(model, g, 0.0, stretch_scratch_, stretch_zero_);
+    solver_.addStretchJacobianTimes(model, 0.0, 2.0 * g, stretch_zero_, stretch_spin1_);
+  }
   solver_.solve(model, data, gh, gh * gh);
   if (body_) finishRovBody(model.body(), data.tip_known_acc + solver_.tipDelta(), f.data().body);
   StagePower power2 = stagePower(model, data, end);
@@ -196,6 +220,13 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     x.segment<4>(StateLayout::bodyAttitude(n)) =
         turnedAttitude(x.segment<4>(StateLayout::bodyAttitude(n)), 0.5 * (body_turn1_ + turn2));
     x.segment<3>(StateLayout::bodyOmega(n)) += 0.5 * (body_spin1_ + spin2);
+  }
+  if (axial_) {  // x_{n+1} = x_n + (k1 + k~2) / 2, with ks'2 = h s''_2 and k~s2 = r2 + g h ks'2
+    for (int k = first; k < n; ++k) {
+      const double spin2 = h * solver_.link(k).stretch_acc;
+      x(StateLayout::stretch(n, body_, k)) += 0.5 * (stretch_turn1_(k) + stretch_rate2_(k) + gh * spin2);
+      x(StateLayout::stretchRate(n, body_, k)) += 0.5 * (stretch_spin1_(k) + spin2);
+    }
   }
   // The power balance: inputs into work_input, losses into dissipated, each the stages' mean.
   x(StateLayout::workInput(n)) += 0.5 * h * (power1.input + power2.input);

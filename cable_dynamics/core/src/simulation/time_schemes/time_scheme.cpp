@@ -21,7 +21,7 @@ std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, dou
     case Integrator::kSemiImplicit:
       return std::make_unique<SemiImplicitScheme>(links);
     case Integrator::kImplicit:
-      return std::make_unique<LinearImplicitScheme>(links, rho_infinity, body);
+      return std::make_unique<LinearImplicitScheme>(links, rho_infinity, body, axial);
   }
   return nullptr;
 }

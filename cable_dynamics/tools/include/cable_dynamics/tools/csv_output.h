@@ -22,8 +22,9 @@ constexpr int kCsvSignificantDigits = 10;
 /// tensionK, top_tension, load_force_x/y/z, base_force_x/y/z, the energies, base_x/y/z (the base's
 /// position, which moves with base.motion or a base pose), deployed_length, winch_speed, deployed_links,
 /// the seabed's contact_energy, grounded_length, touchdown_arc_length (-1: no contact), touchdown_x/y/z
-/// (paper frame), max_penetration, and with a seabed seabed_normalK per link [N].
-std::vector<std::string> csvColumns(int links, bool seabed = false);
+/// (paper frame), max_penetration, with a seabed seabed_normalK per link [N], and with axial elasticity
+/// strainK per link [-] (its stretched length is l_K (1 + strainK)) and slack_links (a count).
+std::vector<std::string> csvColumns(int links, bool seabed = false, bool axial = false);
 
 /// Writes cable_sim's CSV to a stream: the header, then rows formatted into a buffer sized once for
 /// `links` and handed to the stream whenever it holds more than `flush_bytes`, and at flush().
@@ -32,7 +33,9 @@ class CsvWriter {
   /// \param[in] out    the stream written to; it must outlive the writer
   /// \param[in] links  n, the number of link slots of every row
   /// \param[in] seabed with the per-link seabed_normalK columns
-  CsvWriter(std::ostream& out, int links, std::size_t flush_bytes = kDefaultFlushBytes, bool seabed = false);
+  /// \param[in] axial with the strainK and slack_links columns
+  CsvWriter(std::ostream& out, int links, std::size_t flush_bytes = kDefaultFlushBytes, bool seabed = false,
+            bool axial = false);
   static constexpr std::size_t kDefaultFlushBytes = 1 << 18;
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
@@ -55,6 +58,7 @@ class CsvWriter {
   std::ostream& out_;
   int links_;
   bool seabed_;
+  bool axial_;
   std::size_t flush_bytes_;
   std::size_t row_bytes_;     ///< the longest row's characters, newline included
   std::vector<char> buffer_;  ///< flush_bytes_ + row_bytes_, allocated once

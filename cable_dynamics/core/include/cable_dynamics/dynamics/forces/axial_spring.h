@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// \brief The links' axial elasticity (docs/MODEL.md section 10): the law of one link's stretch, its
+/// \brief The links' axial elasticity (docs/MODEL.md section 12): the law of one link's stretch, its
 ///        value, its stored energy and its loss, side by side; and the passes over the chain that the
 ///        dynamics call. A link's far end sits l + s along its axis from its base end: the stretch s [m]
 ///        is a massless prismatic joint at the link's far end, the tension there is the law below.

@@ -28,7 +28,9 @@ namespace cable_dynamics {
 /// Cost: two evaluations of the loads, one linearization and two recursions per step; no heap allocation.
 class LinearImplicitScheme : public TimeScheme {
  public:
-  LinearImplicitScheme(int links, double rho_infinity, bool body = false);
+  /// `axial`: the state carries each link's stretch and its rate (axial elasticity), stepped as the
+  /// rotations are, its spring and damper folded into the recursion.
+  LinearImplicitScheme(int links, double rho_infinity, bool body = false, bool axial = false);
 
   bool advance(ChainDynamics& dynamics, const EndConditions& ends, double t, double h, Eigen::VectorXd& x) override;
   /// Its power terms are the two stages' mean (second order), but a step's balance is not closed to the
@@ -60,6 +62,10 @@ class LinearImplicitScheme : public TimeScheme {
   /// The ROV body (load.mode body) is stepped as a link is: its rotation vector and angular velocity in its
   /// own frame, with only its inertia in W (its own forces are slow beside the cable's: explicit).
   bool body_ = false;
+  bool axial_ = false;
+  /// Axial elasticity (n each): the stretch rates at the step's start [m/s], stage 1's ks'1 = h s''_1
+  /// [m/s] and ks1 [m], stage 2's rate term r2 [m] and a scratch vector.
+  Eigen::VectorXd stretch_rate_, stretch_spin1_, stretch_turn1_, stretch_rate2_, stretch_scratch_, stretch_zero_;
   Eigen::Vector3d body_turn1_ = Eigen::Vector3d::Zero(), body_spin1_ = Eigen::Vector3d::Zero();
 };
 
