@@ -1,0 +1,398 @@
+// Issue 24, item 1: cable_dynamics side by side with MoorDyn (linked through its C API, built outside this
+// repository; bench/moordyn/run.sh). For each line of lines/ (a MoorDyn input file and a cable_dynamics
+// config of the same line):
+//   - the step each side takes: MoorDyn's own (its CFL rule, RK2, its default), cable_dynamics' RK4 at its
+//     recommended step (CableSimulator::estimateStableTimeStep) and its implicit integrator at 10 ms;
+//   - wall time per simulated second of the stepping alone (construction, statics and MoorDyn's initial
+//     condition solve are outside the clock), median over --reps repetitions, the three sides run one
+//     after the other in every repetition so that they share the machine's load;
+//   - the static fairlead tension and its error against the line's reference (closed forms below, and the
+//     quasi-static codes' values MoorDyn's test tests/quasi_static_chain.cpp checks against);
+//   - the dynamic fairlead tension's max and min over the run (the chains: over the window of the OrcaFlex
+//     series MoorDyn's test reads, tests/Mooring/QuasiStatic/, found under MOORDYN_SOURCE), and its error.
+// Usage: moordyn_bench <lines dir> [reps] [MoorDyn source dir or ""]
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <moordyn/MoorDyn2.h>
+
+#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+
+namespace {
+
+using cable_dynamics::CableParams;
+using cable_dynamics::CableSimulator;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kSample = 0.1;  // s: both sides are sampled (and MoorDyn is driven) every 0.1 s
+
+// ---- the references -----------------------------------------------------------------------------
+// The elastic catenary (Irvine, Cables Structures, 1981, ch. 2; the form MAP++ and MoorDyn's own
+// quasi-static seeds use). A line of unstretched length L [m], submerged weight w [N/m], axial stiffness
+// EA [N] (infinite: inextensible), from its lower end to a fairlead x out and z up [m]; unknowns the
+// horizontal tension H [N] and the fairlead's vertical tension V [N]. With s = asinh:
+//  suspended (lower end's vertical tension Va = V - w L):
+//    x = H/w (s(V/H) - s(Va/H)) + H L/EA
+//    z = H/w (sqrt(1 + (V/H)^2) - sqrt(1 + (Va/H)^2)) + (V L - w L^2/2)/EA
+//  a grounded part on a frictionless flat bottom, the anchor on it (0 < V < w L, grounded length L - V/w):
+//    x = L - V/w + H/w s(V/H) + H L/EA
+//    z = H/w (sqrt(1 + (V/H)^2) - 1) + V^2/(2 w EA)
+// Solved by Newton's method in (log H, log V). Returns the fairlead tension sqrt(H^2 + V^2) [N].
+double catenaryFairleadTension(double L, double w, double EA, double x, double z, bool grounded) {
+  auto residual = [&](double H, double V, double r[2]) {
+    const double e = std::isinf(EA) ? 0.0 : 1.0 / EA;
+    if (grounded) {
+      r[0] = L - V / w + H / w * std::asinh(V / H) + H * L * e - x;
+      r[1] = H / w * (std::sqrt(1 + V * V / (H * H)) - 1) + V * V / (2 * w) * e - z;
+    } else {
+      const double Va = V - w * L;
+      r[0] = H / w * (std::asinh(V / H) - std::asinh(Va / H)) + H * L * e - x;
+      r[1] = H / w * (std::sqrt(1 + V * V / (H * H)) - std::sqrt(1 + Va * Va / (H * H))) +
+             (V * L - w * L * L / 2) * e - z;
+    }
+  };
+  // MAP++'s starting point (Jonkman 2007, "Dynamics modeling and loads analysis of an offshore floating
+  // wind turbine", eq. 4-?): lambda from the chord.
+  const double chord2 = x * x + z * z;
+  const double lambda = chord2 >= L * L ? 0.2 : std::sqrt(3 * ((L * L - z * z) / (x * x) - 1));
+  double a = std::log(std::abs(w * x / (2 * lambda)));
+  double b = std::log(w / 2 * (z / std::tanh(lambda) + L));
+  if (grounded) b = std::min(b, std::log(0.9 * w * L));
+  for (int it = 0; it < 200; ++it) {
+    double r[2], ra[2], rb[2];
+    const double H = std::exp(a), V = std::exp(b);
+    residual(H, V, r);
+    if (std::abs(r[0]) + std::abs(r[1]) < 1e-9 * (L + 1)) break;
+    const double d = 1e-7;
+    residual(H * std::exp(d), V, ra);
+    residual(H, V * std::exp(d), rb);
+    const double j00 = (ra[0] - r[0]) / d, j10 = (ra[1] - r[1]) / d, j01 = (rb[0] - r[0]) / d,
+                 j11 = (rb[1] - r[1]) / d;
+    const double det = j00 * j11 - j01 * j10;
+    double da = -(j11 * r[0] - j01 * r[1]) / det, db = -(-j10 * r[0] + j00 * r[1]) / det;
+    const double big = std::max(std::abs(da), std::abs(db));
+    if (big > 0.5) da *= 0.5 / big, db *= 0.5 / big;  // damped: at most a factor e^0.5 a step
+    a += da;
+    b += db;
+    if (grounded) b = std::min(b, std::log(w * L * (1 - 1e-12)));
+  }
+  const double H = std::exp(a), V = std::exp(b);
+  double r[2];
+  residual(H, V, r);
+  if (std::abs(r[0]) + std::abs(r[1]) > 1e-6 * (L + 1)) return std::nan("");
+  return std::hypot(H, V);
+}
+
+/// A line of the table and what it is compared with.
+struct Line {
+  std::string name;         // lines/<name>.txt and lines/<name>.yaml
+  double duration;          // s simulated
+  // The closed form's data: unstretched length [m], submerged weight [N/m], EA [N], fairlead x out and z up
+  // from the lower end [m], a grounded part; for the payout (vertical), the load's submerged weight [N].
+  double L, w, EA, x, z;
+  bool grounded;
+  double load_weight = 0.0;
+  bool payout = false;
+  double published_static = 0.0;  // kN: the quasi-static codes' fairlead tension (MoorDyn's test)
+  std::string orcaflex;           // tests/Mooring/QuasiStatic/<this>: OrcaFlex's fairlead tension series
+};
+
+/// The submerged weight of a cylinder line [N/m].
+double submergedWeight(double mass_per_length, double diameter, double g = 9.80665, double rho = 1025.0) {
+  return (mass_per_length - rho * kPi * diameter * diameter / 4) * g;
+}
+
+/// The fairlead's prescribed motion (the project config's base.motion, vertical sine), position and
+/// velocity [m], [m/s] at t [s].
+struct Heave {
+  double amplitude = 0.0, period = 10.0;
+  double z(double t) const { return amplitude * std::sin(2 * kPi * t / period); }
+  double v(double t) const { return amplitude * 2 * kPi / period * std::cos(2 * kPi * t / period); }
+};
+
+/// One side's run: the fairlead tension [N] every kSample s from t = 0 (static) and the wall time of
+/// the stepping [s].
+struct Run {
+  std::vector<double> t, tension;
+  double wall = 0.0, dt = 0.0;
+  bool ok = true;
+  std::string note;
+};
+
+/// The deployed length [m] and winch speed [m/s] the project's winch followed, every kSample s: MoorDyn's
+/// line follows the same.
+struct Deployment {
+  std::vector<double> length, speed;
+};
+
+/// MoorDyn writes to stdout while reading a file and solving its initial condition: muted around those.
+struct MuteStdout {
+  int saved;
+  MuteStdout() {
+    std::fflush(stdout);
+    std::cout.flush();
+    saved = dup(1);
+    FILE* null = std::fopen("/dev/null", "w");
+    dup2(fileno(null), 1);
+    std::fclose(null);
+  }
+  ~MuteStdout() {
+    std::fflush(stdout);
+    std::cout.flush();
+    dup2(saved, 1);
+    close(saved);
+  }
+};
+
+Run runMoorDyn(const std::string& file, const Heave& heave, double duration, const Deployment* deploy) {
+  Run run;
+  MoorDyn md;
+  {
+    MuteStdout mute;
+    md = MoorDyn_Create(file.c_str());
+    if (md) MoorDyn_SetVerbosity(md, MOORDYN_NO_OUTPUT);
+  }
+  if (!md) return run.ok = false, run.note = "MoorDyn_Create failed", run;
+  unsigned int dof = 0;
+  MoorDyn_NCoupledDOF(md, &dof);
+  if (dof != 3) return MoorDyn_Close(md), run.ok = false, run.note = "expected one coupled point", run;
+  MoorDynLine line = MoorDyn_GetLine(md, 1);
+  double x[3] = {0, 0, heave.z(0)}, xd[3] = {0, 0, heave.v(0)}, f[3];
+  int status;
+  {
+    MuteStdout mute;
+    status = MoorDyn_Init(md, x, xd);  // its initial condition solve (dynamic relaxation): not timed
+  }
+  if (status != MOORDYN_SUCCESS) return MoorDyn_Close(md), run.ok = false, run.note = "MoorDyn_Init failed", run;
+  MoorDyn_GetDt(md, &run.dt);
+  auto fairlead = [&] {
+    const int lines = 1;
+    float fh, fv, ah, av;
+    MoorDyn_GetFASTtens(md, &lines, &fh, &fv, &ah, &av);
+    return std::hypot(double(fh), double(fv));  // N
+  };
+  run.t.push_back(0.0);
+  run.tension.push_back(fairlead());
+  const int samples = int(std::lround(duration / kSample));
+  for (int k = 0; k < samples && run.ok; ++k) {
+    double t = k * kSample, dt = kSample;
+    x[2] = heave.z(t);
+    xd[2] = heave.v(t);
+    const Clock::time_point start = Clock::now();
+    if (deploy && k < int(deploy->length.size())) {  // the payout: the project's deployment, every 0.1 s
+      MoorDyn_SetLineUnstretchedLength(line, deploy->length[k]);
+      MoorDyn_SetLineUnstretchedLengthVel(line, deploy->speed[k]);
+    }
+    run.ok = MoorDyn_Step(md, x, xd, f, &t, &dt) == MOORDYN_SUCCESS;
+    run.wall += std::chrono::duration<double>(Clock::now() - start).count();
+    run.t.push_back((k + 1) * kSample);
+    run.tension.push_back(fairlead());
+  }
+  if (!run.ok) run.note = "MoorDyn_Step failed";
+  MoorDyn_Close(md);
+  return run;
+}
+
+CableParams projectParams(const std::string& yaml, bool rk4, double* rk4_dt) {
+  if (!rk4) return cable_dynamics::loadConfigFile(yaml, {"simulation.integrator=implicit", "simulation.dt=0.01"});
+  if (*rk4_dt <= 0) {  // the recommended RK4 step (half the stable limit), from a simulator built once
+    CableSimulator probe(cable_dynamics::loadConfigFile(yaml, {"simulation.integrator=implicit"}));
+    *rk4_dt = probe.estimateStableTimeStep();
+  }
+  std::ostringstream dt;
+  dt.precision(17);
+  dt << "simulation.dt=" << *rk4_dt;
+  return cable_dynamics::loadConfigFile(yaml, {"simulation.integrator=rk4", dt.str()});
+}
+
+Run runProject(const CableParams& params, double duration, Deployment* record) {
+  Run run;
+  CableSimulator sim(params);  // with initial.mode equilibrium, the statics: not timed
+  run.dt = sim.dt();
+  cable_dynamics::SimulationSnapshot snap;
+  auto fairlead = [&] {
+    sim.snapshot(snap);
+    if (record) {  // the deployment at this sample, for MoorDyn's line to follow
+      record->length.push_back(snap.deployed_length);
+      record->speed.push_back(snap.winch_speed);
+    }
+    return sim.hasWinch() ? snap.line_pull : snap.chain.base_force.norm();  // N
+  };
+  run.t.push_back(0.0);
+  run.tension.push_back(fairlead());
+  const int samples = int(std::lround(duration / kSample));
+  for (int k = 0; k < samples && run.ok; ++k) {
+    const double until = (k + 1) * kSample - 0.5 * run.dt;
+    const Clock::time_point start = Clock::now();
+    while (sim.time() < until && run.ok) {
+      const cable_dynamics::StepReport report = sim.step();
+      run.ok = report.ok;
+      if (!report.ok) run.note = report.message;
+    }
+    run.wall += std::chrono::duration<double>(Clock::now() - start).count();
+    run.t.push_back(sim.time());
+    run.tension.push_back(fairlead());
+  }
+  if (sim.retriedSteps() > 0) run.note += std::to_string(sim.retriedSteps()) + " steps retried";
+  return run;
+}
+
+/// OrcaFlex's fairlead tension [N] against simulated time [s] (the series starts 10 s into the run: the
+/// motion file starts at t = -10 s), from MoorDyn's tests; empty when not found.
+std::vector<std::pair<double, double>> readOrcaflex(const std::string& path) {
+  std::vector<std::pair<double, double>> series;
+  std::ifstream in(path);
+  for (std::string row; std::getline(in, row);) {
+    std::istringstream fields(row);
+    double t, x, z, fair;
+    if (fields >> t >> x >> z >> fair) series.push_back({t + 10.0, 1e3 * fair});
+  }
+  return series;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s <lines dir> [reps] [MoorDyn source dir]\n", argv[0]);
+    return 2;
+  }
+  const std::string dir = argv[1];
+  const int reps = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
+  const std::string source = argc > 3 ? argv[3] : "";
+  const double w_chain = submergedWeight(390.0, 0.252);
+  const double inf = std::numeric_limits<double>::infinity();
+  (void)inf;
+  const std::vector<Line> lines = {
+      {"wd0050", 30.0, 410.0, w_chain, 1.674e9, 400.0, 50.0, true, 0.0, false, 991.6, "WD0050_Chain_ZZP1_A1.txt"},
+      {"wd0200", 30.0, 760.0, w_chain, 1.674e9, 700.0, 200.0, true, 0.0, false, 2065.4, "WD0200_Chain_ZZP1_A1.txt"},
+      {"wd0600", 30.0, 1700.0, w_chain, 1.674e9, 1500.0, 600.0, true, 0.0, false, 5232.6, "WD0600_Chain_ZZP1_A1.txt"},
+      {"tether", 40.0, 100.0, submergedWeight(0.6, 0.025), 1.0e6, 40.0, 80.0, false},
+      // The payout: vertical, the load's submerged weight (2000 kg - 1025 kg/m^3 x 0.8 m^3) x g; its
+      // references are w L + W at 20 m (start) and at 50 m (end, static).
+      {"payout", 80.0, 50.0, submergedWeight(6.5, 0.04), 5.0e7, 0.0, 50.0, false,
+       (2000.0 - 1025.0 * 0.8) * 9.80665, true},
+  };
+
+  std::printf("moordyn_bench: %d repetitions; wall time = stepping only, per simulated second [s/s], median (min-max)\n",
+              reps);
+  std::printf("%-7s %-14s %8s %-24s %10s %-26s %-22s %-22s %s\n", "line", "side", "dt [ms]",
+              "wall/sim [s/s]", "static [kN]", "static error [%]", "dynamic max/min [kN]",
+              "dynamic error [%]", "note");
+  for (const Line& line : lines) {
+    const std::string yaml = dir + "/" + line.name + ".yaml", txt = dir + "/" + line.name + ".txt";
+    // The references.
+    double ref_inext, ref_elastic, ref_end = 0.0;
+    if (line.payout) {
+      ref_inext = ref_elastic = line.w * 20.0 + line.load_weight;  // at the start, 20 m deployed
+      ref_end = line.w * line.L + line.load_weight;                // at the end, 50 m
+    } else {
+      ref_inext = catenaryFairleadTension(line.L, line.w, inf, line.x, line.z, line.grounded);
+      ref_elastic = catenaryFairleadTension(line.L, line.w, line.EA, line.x, line.z, line.grounded);
+    }
+    std::vector<std::pair<double, double>> orcaflex;
+    if (!line.orcaflex.empty() && !source.empty())
+      orcaflex = readOrcaflex(source + "/tests/Mooring/QuasiStatic/" + line.orcaflex);
+    Heave heave;
+    {
+      const CableParams p = cable_dynamics::loadConfigFile(yaml);
+      heave.amplitude = p.base.motion.amplitude.z();
+      heave.period = p.base.motion.period;
+    }
+    // The sides, run one after the other in each repetition.
+    const char* names[3] = {"cable_dyn RK4", "cable_dyn impl", "MoorDyn RK2"};
+    std::vector<double> walls[3];
+    Run first[3];
+    double rk4_dt = 0.0;
+    Deployment deploy;
+    for (int rep = 0; rep < reps; ++rep) {
+      for (int side = 0; side < 3; ++side) {
+        Run run;
+        try {
+          if (side < 2)
+            run = runProject(projectParams(yaml, side == 0, &rk4_dt), line.duration,
+                             line.payout && side == 0 && rep == 0 ? &deploy : nullptr);
+          else
+            run = runMoorDyn(txt, heave, line.duration, line.payout ? &deploy : nullptr);
+        } catch (const std::exception& e) {
+          run.ok = false;
+          run.note = e.what();
+        }
+        walls[side].push_back(run.wall / line.duration);
+        if (rep == 0) first[side] = run;
+      }
+    }
+    // The table's rows.
+    std::printf("%-7s reference: static fairlead tension %.1f kN inextensible, %.1f kN elastic (closed forms)",
+                line.name.c_str(), ref_inext / 1e3, ref_elastic / 1e3);
+    if (line.published_static > 0) std::printf(", %.1f kN quasi-static codes (MoorDyn's test)", line.published_static);
+    if (line.payout) std::printf("; %.1f kN at 50 m (w L + W)", ref_end / 1e3);
+    double o_max = 0, o_min = 0;
+    if (!orcaflex.empty()) {
+      o_max = -1e300, o_min = 1e300;
+      for (const auto& s : orcaflex) o_max = std::max(o_max, s.second), o_min = std::min(o_min, s.second);
+      std::printf("; OrcaFlex dynamic %.1f / %.1f kN over t = 10-30 s", o_max / 1e3, o_min / 1e3);
+    }
+    std::printf("\n");
+    for (int side = 0; side < 3; ++side) {
+      const Run& r = first[side];
+      const auto mm = std::minmax_element(walls[side].begin(), walls[side].end());
+      char wall[64], stat[96], dyn[64], err[64];
+      std::snprintf(wall, sizeof wall, "%.3f (%.3f-%.3f)", median(walls[side]), *mm.first, *mm.second);
+      if (r.tension.empty() || !r.ok) {
+        std::printf("%-7s %-14s %8.3f %-24s FAILED: %s\n", line.name.c_str(), names[side], r.dt * 1e3, wall,
+                    r.note.c_str());
+        continue;
+      }
+      const double t0 = r.tension.front();
+      if (line.published_static > 0)
+        std::snprintf(stat, sizeof stat, "%+.1f inext %+.1f el %+.1f pub", 100 * (t0 / ref_inext - 1),
+                      100 * (t0 / ref_elastic - 1), 100 * (t0 / (1e3 * line.published_static) - 1));
+      else
+        std::snprintf(stat, sizeof stat, "%+.1f inext %+.1f el", 100 * (t0 / ref_inext - 1), 100 * (t0 / ref_elastic - 1));
+      // The dynamic part: over OrcaFlex's window where there is one (errors as MoorDyn's test computes
+      // them: the largest difference of the tension less its static value, over twice the reference's
+      // largest such excursion), else over the whole run (the payout: the last sample against w L + W).
+      double d_max = -1e300, d_min = 1e300;
+      for (size_t i = 0; i < r.t.size(); ++i)
+        if (orcaflex.empty() || r.t[i] >= 10.0 - 1e-6) d_max = std::max(d_max, r.tension[i]), d_min = std::min(d_min, r.tension[i]);
+      std::snprintf(dyn, sizeof dyn, "%.1f / %.1f", d_max / 1e3, d_min / 1e3);
+      if (!orcaflex.empty()) {
+        double worst = 0, excursion = 0;
+        for (const auto& s : orcaflex) {
+          const size_t i = std::min(r.t.size() - 1, size_t(std::lround(s.first / kSample)));
+          const double ref = s.second - 1e3 * line.published_static;
+          worst = std::max(worst, std::abs((r.tension[i] - t0) - ref));
+          excursion = std::max(excursion, std::abs(ref));
+        }
+        std::snprintf(err, sizeof err, "%.1f (vs OrcaFlex)", 100 * worst / (2 * excursion));
+      } else if (line.payout) {
+        std::snprintf(err, sizeof err, "end %+.2f (vs w L + W)", 100 * (r.tension.back() / ref_end - 1));
+      } else {
+        std::snprintf(err, sizeof err, "-");
+      }
+      std::printf("%-7s %-14s %8.3f %-24s %10.1f %-26s %-22s %-22s %s\n", line.name.c_str(), names[side], r.dt * 1e3,
+                  wall, t0 / 1e3, stat, dyn, err, r.note.c_str());
+    }
+    std::fflush(stdout);
+  }
+  return 0;
+}
