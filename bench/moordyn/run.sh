@@ -22,5 +22,5 @@ nice -n 10 cmake --build "$BUILD" -j"${BENCH_JOBS:-1}" >"$BUILD/build.log" 2>&1 
 rm -rf "$BUILD/lines" && cp -r "$HERE/lines" "$BUILD/lines"
 LIB="$(dirname "$(find "$MOORDYN_DIR" -name 'libmoordyn.so*' -print -quit)")"
 cd "$BUILD"
-echo "[moordyn bench] $(date -u '+%F %T UTC'); uptime: $(uptime)"
-LD_LIBRARY_PATH="$LIB:${LD_LIBRARY_PATH:-}" ./moordyn_bench "$BUILD/lines" "${1:-5}" "$MOORDYN_DIR" | tee "$BUILD/results.txt"
+echo "[moordyn bench] $(date -u '+%F %T UTC'); uptime: $(uptime)" | tee "$BUILD/results.txt"
+LD_LIBRARY_PATH="$LIB:${LD_LIBRARY_PATH:-}" ./moordyn_bench "$BUILD/lines" "${1:-5}" "$MOORDYN_DIR" | tee -a "$BUILD/results.txt"
