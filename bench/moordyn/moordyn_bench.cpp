@@ -99,7 +99,9 @@ double catenaryFairleadTension(double L, double w, double EA, double x, double z
 
 /// A line of the table and what it is compared with.
 struct Line {
-  std::string name;         // lines/<name>.txt and lines/<name>.yaml
+  std::string name;         // the table's label
+  std::string file;         // lines/<file>.txt and lines/<file>.yaml
+  double heave;             // m: the fairlead's heave amplitude, set on both sides (base.motion.amplitude z)
   double duration;          // s simulated
   // The closed form's data: unstretched length [m], submerged weight [N/m], EA [N], fairlead x out and z up
   // from the lower end [m], a grounded part; for the payout (vertical), the load's submerged weight [N].
@@ -233,16 +235,24 @@ Run runMoorDyn(const std::string& file, const Heave& heave, double duration, con
   return run;
 }
 
-CableParams projectParams(const std::string& yaml, bool rk4, double* rk4_dt) {
-  if (!rk4) return cable_dynamics::loadConfigFile(yaml, {"simulation.integrator=implicit", "simulation.dt=0.01"});
+/// The project's config `yaml` with `overrides` (key=value, as cable_sim's --set), for RK4 at its
+/// recommended step (computed once into *rk4_dt) or the implicit integrator at 10 ms.
+CableParams projectParams(const std::string& yaml, std::vector<std::string> overrides, bool rk4, double* rk4_dt) {
+  if (!rk4) {
+    overrides.insert(overrides.end(), {"simulation.integrator=implicit", "simulation.dt=0.01"});
+    return cable_dynamics::loadConfigFile(yaml, overrides);
+  }
   if (*rk4_dt <= 0) {  // the recommended RK4 step (half the stable limit), from a simulator built once
-    CableSimulator probe(cable_dynamics::loadConfigFile(yaml, {"simulation.integrator=implicit"}));
+    std::vector<std::string> probe_overrides = overrides;
+    probe_overrides.push_back("simulation.integrator=implicit");
+    CableSimulator probe(cable_dynamics::loadConfigFile(yaml, probe_overrides));
     *rk4_dt = probe.estimateStableTimeStep();
   }
   std::ostringstream dt;
   dt.precision(17);
   dt << "simulation.dt=" << *rk4_dt;
-  return cable_dynamics::loadConfigFile(yaml, {"simulation.integrator=rk4", dt.str()});
+  overrides.insert(overrides.end(), {"simulation.integrator=rk4", dt.str()});
+  return cable_dynamics::loadConfigFile(yaml, overrides);
 }
 
 Run runProject(const CableParams& params, double duration, Deployment* record) {
@@ -317,25 +327,32 @@ int main(int argc, char** argv) {
   const double inf = std::numeric_limits<double>::infinity();
   (void)inf;
   const std::vector<Line> lines = {
-      {"wd0050", 30.0, 410.0, w_chain, 1.674e9, 400.0, 50.0, true, 0.0, false, 991.6, "WD0050_Chain_ZZP1_A1.txt"},
-      {"wd0200", 30.0, 760.0, w_chain, 1.674e9, 700.0, 200.0, true, 0.0, false, 2065.4, "WD0200_Chain_ZZP1_A1.txt"},
-      {"wd0600", 30.0, 1700.0, w_chain, 1.674e9, 1500.0, 600.0, true, 0.0, false, 5232.6, "WD0600_Chain_ZZP1_A1.txt"},
-      {"tether", 40.0, 100.0, submergedWeight(0.6, 0.025), 1.0e6, 40.0, 80.0, false},
+      // MoorDyn's validation motions: ZZP1_A1 heaves 2 m, ZZP1_A2 5 m, both at a 10 s period.
+      {"wd0050", "wd0050", 2.0, 30.0, 410.0, w_chain, 1.674e9, 400.0, 50.0, true, 0.0, false, 991.6, "WD0050_Chain_ZZP1_A1.txt"},
+      {"wd0200", "wd0200", 2.0, 30.0, 760.0, w_chain, 1.674e9, 700.0, 200.0, true, 0.0, false, 2065.4, "WD0200_Chain_ZZP1_A1.txt"},
+      {"wd0600", "wd0600", 2.0, 30.0, 1700.0, w_chain, 1.674e9, 1500.0, 600.0, true, 0.0, false, 5232.6, "WD0600_Chain_ZZP1_A1.txt"},
+      {"wd0050a2", "wd0050", 5.0, 30.0, 410.0, w_chain, 1.674e9, 400.0, 50.0, true, 0.0, false, 991.6, "WD0050_Chain_ZZP1_A2.txt"},
+      {"wd0200a2", "wd0200", 5.0, 30.0, 760.0, w_chain, 1.674e9, 700.0, 200.0, true, 0.0, false, 2065.4, "WD0200_Chain_ZZP1_A2.txt"},
+      {"wd0600a2", "wd0600", 5.0, 30.0, 1700.0, w_chain, 1.674e9, 1500.0, 600.0, true, 0.0, false, 5232.6, "WD0600_Chain_ZZP1_A2.txt"},
+      {"tether", "tether", 0.5, 40.0, 100.0, submergedWeight(0.6, 0.025), 1.0e6, 40.0, 80.0, false},
       // The payout: vertical, the load's submerged weight (2000 kg - 1025 kg/m^3 x 0.8 m^3) x g; its
       // references are w L + W at 20 m (start) and at 50 m (end, static).
-      {"payout", 80.0, 50.0, submergedWeight(6.5, 0.04), 5.0e7, 0.0, 50.0, false,
+      {"payout", "payout", 0.0, 80.0, 50.0, submergedWeight(6.5, 0.04), 5.0e7, 0.0, 50.0, false,
        (2000.0 - 1025.0 * 0.8) * 9.80665, true},
   };
 
   std::printf("moordyn_bench: %d repetitions; wall time = stepping only, [ms per simulated s], median (min-max)\n",
               reps);
-  std::printf("%-7s %-14s %8s %-24s %10s %-26s %-22s %-22s %s\n", "line", "side", "dt [ms]",
+  std::printf("%-8s %-14s %8s %-24s %10s %-26s %-22s %-22s %s\n", "line", "side", "dt [ms]",
               "wall [ms/sim s]", "static [kN]", "static error [%]", "dyn. max/min [kN] (a)",
               "dynamic error [%]", "note");
   const char* only = std::getenv("MDB_ONLY");  // one line of the table, by name (debugging)
   for (const Line& line : lines) {
     if (only && line.name != only) continue;
-    const std::string yaml = dir + "/" + line.name + ".yaml", txt = dir + "/" + line.name + ".txt";
+    const std::string yaml = dir + "/" + line.file + ".yaml", txt = dir + "/" + line.file + ".txt";
+    char amplitude[64];
+    std::snprintf(amplitude, sizeof amplitude, "base.motion.amplitude=[0, 0, %.17g]", line.heave);
+    const std::vector<std::string> heave_override = {amplitude};
     // The references.
     double ref_inext, ref_elastic, ref_end = 0.0;
     if (line.payout) {
@@ -350,7 +367,7 @@ int main(int argc, char** argv) {
       orcaflex = readOrcaflex(source + "/tests/Mooring/QuasiStatic/" + line.orcaflex);
     Heave heave;
     {
-      const CableParams p = cable_dynamics::loadConfigFile(yaml);
+      const CableParams p = cable_dynamics::loadConfigFile(yaml, heave_override);
       heave.amplitude = p.base.motion.amplitude.z();
       heave.period = p.base.motion.period;
     }
@@ -365,7 +382,7 @@ int main(int argc, char** argv) {
         Run run;
         try {
           if (side < 2)
-            run = runProject(projectParams(yaml, side == 0, &rk4_dt), line.duration,
+            run = runProject(projectParams(yaml, heave_override, side == 0, &rk4_dt), line.duration,
                              line.payout && side == 0 && rep == 0 ? &deploy : nullptr);
           else
             run = runMoorDyn(txt, heave, line.duration, line.payout ? &deploy : nullptr);
@@ -383,7 +400,7 @@ int main(int argc, char** argv) {
       }
     }
     // The table's rows.
-    std::printf("%-7s reference: static fairlead tension %.4g kN inextensible, %.4g kN elastic (closed forms)",
+    std::printf("%-8s reference: static fairlead tension %.4g kN inextensible, %.4g kN elastic (closed forms)",
                 line.name.c_str(), ref_inext / 1e3, ref_elastic / 1e3);
     if (line.published_static > 0) std::printf(", %.1f kN quasi-static codes (MoorDyn's test)", line.published_static);
     if (line.payout) std::printf("; %.4g kN at 50 m (w L + W)", ref_end / 1e3);
@@ -400,7 +417,7 @@ int main(int argc, char** argv) {
       char wall[64], stat[96], dyn[64], err[64];
       std::snprintf(wall, sizeof wall, "%.3g (%.3g-%.3g)", 1e3 * median(walls[side]), 1e3 * *mm.first, 1e3 * *mm.second);
       if (r.tension.empty() || !r.ok) {
-        std::printf("%-7s %-14s %8.3f %-24s FAILED: %s\n", line.name.c_str(), names[side], r.dt * 1e3, wall,
+        std::printf("%-8s %-14s %8.3f %-24s FAILED: %s\n", line.name.c_str(), names[side], r.dt * 1e3, wall,
                     r.note.c_str());
         continue;
       }
@@ -438,7 +455,7 @@ int main(int argc, char** argv) {
       } else {
         std::snprintf(err, sizeof err, "-");
       }
-      std::printf("%-7s %-14s %8.3f %-24s %10.4g %-26s %-22s %-22s %s\n", line.name.c_str(), names[side], r.dt * 1e3,
+      std::printf("%-8s %-14s %8.3f %-24s %10.4g %-26s %-22s %-22s %s\n", line.name.c_str(), names[side], r.dt * 1e3,
                   wall, t0 / 1e3, stat, dyn, err, r.note.c_str());
     }
     if (line.payout) {  // MoorDyn's line created at the paid-out length: its static tension only
@@ -453,7 +470,7 @@ int main(int argc, char** argv) {
       }
       if (md) MoorDyn_Close(md);
       const double t = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-      std::printf("%-7s %-14s %8s %-24s %10.4g %+.2f vs w L + W at 50 m (lines/payout50.txt)\n", line.name.c_str(),
+      std::printf("%-8s %-14s %8s %-24s %10.4g %+.2f vs w L + W at 50 m (lines/payout50.txt)\n", line.name.c_str(),
                   "MoorDyn 50 m", "-", "static only", t / 1e3, 100 * (t / ref_end - 1));
     }
     std::fflush(stdout);
