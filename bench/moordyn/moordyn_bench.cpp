@@ -4,12 +4,12 @@
 //   - the step each side takes: MoorDyn's own (its CFL rule, RK2, its default), cable_dynamics' RK4 at its
 //     recommended step (CableSimulator::estimateStableTimeStep) and its implicit integrator at 10 ms;
 //   - wall time per simulated second of the stepping alone (construction, statics and MoorDyn's initial
-//     condition solve are outside the clock), median over --reps repetitions, the three sides run one
+//     condition solve are outside the clock), median over [reps] repetitions, the three sides run one
 //     after the other in every repetition so that they share the machine's load;
 //   - the static fairlead tension and its error against the line's reference (closed forms below, and the
 //     quasi-static codes' values MoorDyn's test tests/quasi_static_chain.cpp checks against);
 //   - the dynamic fairlead tension's max and min over the run (the chains: over the window of the OrcaFlex
-//     series MoorDyn's test reads, tests/Mooring/QuasiStatic/, found under MOORDYN_SOURCE), and its error.
+//     series MoorDyn's test reads, tests/Mooring/QuasiStatic/ under the MoorDyn source dir), and its error.
 // Usage: moordyn_bench <lines dir> [reps] [MoorDyn source dir or ""]
 #include <unistd.h>
 
@@ -19,7 +19,6 @@
 #include <cstdlib>
 #include <cstdio>
 #include <fstream>
-#include <functional>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -41,8 +40,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kSample = 0.1;  // s: both sides are sampled (and MoorDyn is driven) every 0.1 s
 
 // ---- the references -----------------------------------------------------------------------------
-// The elastic catenary (Irvine, Cables Structures, 1981, ch. 2; the form MAP++ and MoorDyn's own
-// quasi-static seeds use). A line of unstretched length L [m], submerged weight w [N/m], axial stiffness
+// The elastic catenary (Irvine, Cable Structures, 1981, ch. 2; with a grounded part the form MAP++
+// solves). A line of unstretched length L [m], submerged weight w [N/m], axial stiffness
 // EA [N] (infinite: inextensible), from its lower end to a fairlead x out and z up [m]; unknowns the
 // horizontal tension H [N] and the fairlead's vertical tension V [N]. With s = asinh:
 //  suspended (lower end's vertical tension Va = V - w L):
@@ -65,8 +64,7 @@ double catenaryFairleadTension(double L, double w, double EA, double x, double z
              (V * L - w * L * L / 2) * e - z;
     }
   };
-  // MAP++'s starting point (Jonkman 2007, "Dynamics modeling and loads analysis of an offshore floating
-  // wind turbine", eq. 4-?): lambda from the chord.
+  // The usual starting point, from the chord (lambda as in Peyrot and Goulois, 1979).
   const double chord2 = x * x + z * z;
   const double lambda = chord2 >= L * L ? 0.2 : std::sqrt(3 * ((L * L - z * z) / (x * x) - 1));
   double a = std::log(std::abs(w * x / (2 * lambda)));
@@ -118,8 +116,8 @@ double submergedWeight(double mass_per_length, double diameter, double g = 9.806
   return (mass_per_length - rho * kPi * diameter * diameter / 4) * g;
 }
 
-/// The fairlead's prescribed motion (the project config's base.motion, vertical sine), position and
-/// velocity [m], [m/s] at t [s].
+/// The fairlead's prescribed motion (the project config's base.motion, a vertical sine): its height [m]
+/// at t [s].
 struct Heave {
   double amplitude = 0.0, period = 10.0;
   double z(double t) const { return amplitude * std::sin(2 * kPi * t / period); }
@@ -134,10 +132,9 @@ struct Run {
   std::string note;
 };
 
-/// The deployed length [m] and winch speed [m/s] the project's winch followed, every kSample s: MoorDyn's
-/// line follows the same.
+/// The winch speed [m/s] the project's winch ran at, every kSample s: MoorDyn's line follows it.
 struct Deployment {
-  std::vector<double> length, speed;
+  std::vector<double> speed;
 };
 
 /// MoorDyn writes to stdout while reading a file and solving its initial condition: muted around those
@@ -263,7 +260,6 @@ Run runProject(const CableParams& params, double duration, Deployment* record) {
   auto fairlead = [&] {
     sim.snapshot(snap);
     if (record) {  // the deployment at this sample, for MoorDyn's line to follow
-      record->length.push_back(snap.deployed_length);
       record->speed.push_back(snap.winch_speed);
     }
     return sim.hasWinch() ? snap.line_pull : snap.chain.base_force.norm();  // N
@@ -325,7 +321,6 @@ int main(int argc, char** argv) {
   const std::string source = argc > 3 ? argv[3] : "";
   const double w_chain = submergedWeight(390.0, 0.252);
   const double inf = std::numeric_limits<double>::infinity();
-  (void)inf;
   const std::vector<Line> lines = {
       // MoorDyn's validation motions: ZZP1_A1 heaves 2 m, ZZP1_A2 5 m, both at a 10 s period.
       {"wd0050", "wd0050", 2.0, 30.0, 410.0, w_chain, 1.674e9, 400.0, 50.0, true, 0.0, false, 991.6, "WD0050_Chain_ZZP1_A1.txt"},
