@@ -1,15 +1,17 @@
 // Issue 24, item 1: cable_dynamics side by side with MoorDyn (linked through its C API, built outside this
 // repository; bench/moordyn/run.sh). For each line of lines/ (a MoorDyn input file and a cable_dynamics
 // config of the same line):
-//   - the step each side takes: MoorDyn's own (its CFL rule, RK2, its default), cable_dynamics' RK4 at its
-//     recommended step (CableSimulator::estimateStableTimeStep) and its implicit integrator at 10 ms;
+//   - the step each side takes: MoorDyn's own (its CFL rule, RK2, its default; called once per step, and
+//     once per 0.1 s as its chain test calls it), cable_dynamics' RK4 at its recommended step
+//     (CableSimulator::estimateStableTimeStep) and its implicit integrator at 10 ms;
 //   - wall time per simulated second of the stepping alone (construction, statics and MoorDyn's initial
 //     condition solve are outside the clock), median over [reps] repetitions, the three sides run one
 //     after the other in every repetition so that they share the machine's load;
 //   - the static fairlead tension and its error against the line's reference (closed forms below, and the
 //     quasi-static codes' values MoorDyn's test tests/quasi_static_chain.cpp checks against);
-//   - the dynamic fairlead tension's max and min over the run (the chains: over the window of the OrcaFlex
-//     series MoorDyn's test reads, tests/Mooring/QuasiStatic/ under the MoorDyn source dir), and its error.
+//   - the dynamic fairlead tension's max and min over the run (the chains and the jumper: over the window
+//     of the reference series MoorDyn's tests read, under the MoorDyn source dir's tests/Mooring/), and its
+//     error.
 // Usage: moordyn_bench <lines dir> [reps] [MoorDyn source dir or ""]
 #include <unistd.h>
 
