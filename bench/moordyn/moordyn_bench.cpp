@@ -1,0 +1,513 @@
+// Issue 24, item 1: cable_dynamics side by side with MoorDyn (linked through its C API, built outside this
+// repository; bench/moordyn/run.sh). For each line of lines/ (a MoorDyn input file and a cable_dynamics
+// config of the same line):
+//   - the step each side takes: MoorDyn's own (its CFL rule, RK2, its default; called once per step, and
+//     once per 0.1 s as its chain test calls it), cable_dynamics' RK4 at its recommended step
+//     (CableSimulator::estimateStableTimeStep) and its implicit integrator at 10 ms;
+//   - wall time per simulated second of the stepping alone (construction, statics and MoorDyn's initial
+//     condition solve are outside the clock), median over [reps] repetitions, the three sides run one
+//     after the other in every repetition so that they share the machine's load;
+//   - the static fairlead tension and its error against the line's reference (closed forms below, and the
+//     quasi-static codes' values MoorDyn's test tests/quasi_static_chain.cpp checks against);
+//   - the dynamic fairlead tension's max and min over the run (the chains and the jumper: over the window
+//     of the reference series MoorDyn's tests read, under the MoorDyn source dir's tests/Mooring/), and its
+//     error.
+// Usage: moordyn_bench <lines dir> [reps] [MoorDyn source dir or ""]
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <moordyn/MoorDyn2.h>
+
+#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
+
+namespace {
+
+using cable_dynamics::CableParams;
+using cable_dynamics::CableSimulator;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kSample = 0.1;  // s: both sides are sampled (and MoorDyn is driven) every 0.1 s
+
+// ---- the references -----------------------------------------------------------------------------
+// The elastic catenary (Irvine, Cable Structures, 1981, ch. 2; with a grounded part the form MAP++
+// solves). A line of unstretched length L [m], submerged weight w [N/m], axial stiffness
+// EA [N] (infinite: inextensible), from its lower end to a fairlead x out and z up [m]; unknowns the
+// horizontal tension H [N] and the fairlead's vertical tension V [N]. With s = asinh:
+//  suspended (lower end's vertical tension Va = V - w L):
+//    x = H/w (s(V/H) - s(Va/H)) + H L/EA
+//    z = H/w (sqrt(1 + (V/H)^2) - sqrt(1 + (Va/H)^2)) + (V L - w L^2/2)/EA
+//  a grounded part on a frictionless flat bottom, the anchor on it (0 < V < w L, grounded length L - V/w):
+//    x = L - V/w + H/w s(V/H) + H L/EA
+//    z = H/w (sqrt(1 + (V/H)^2) - 1) + V^2/(2 w EA)
+// Solved by Newton's method in (log H, log V). Returns the fairlead tension sqrt(H^2 + V^2) [N].
+double catenaryFairleadTension(double L, double w, double EA, double x, double z, bool grounded) {
+  auto residual = [&](double H, double V, double r[2]) {
+    const double e = std::isinf(EA) ? 0.0 : 1.0 / EA;
+    if (grounded) {
+      r[0] = L - V / w + H / w * std::asinh(V / H) + H * L * e - x;
+      r[1] = H / w * (std::sqrt(1 + V * V / (H * H)) - 1) + V * V / (2 * w) * e - z;
+    } else {
+      const double Va = V - w * L;
+      r[0] = H / w * (std::asinh(V / H) - std::asinh(Va / H)) + H * L * e - x;
+      r[1] = H / w * (std::sqrt(1 + V * V / (H * H)) - std::sqrt(1 + Va * Va / (H * H))) +
+             (V * L - w * L * L / 2) * e - z;
+    }
+  };
+  // The usual starting point, from the chord (lambda as in Peyrot and Goulois, 1979).
+  const double chord2 = x * x + z * z;
+  const double lambda = chord2 >= L * L ? 0.2 : std::sqrt(3 * ((L * L - z * z) / (x * x) - 1));
+  double a = std::log(std::abs(w * x / (2 * lambda)));
+  double b = std::log(w / 2 * (z / std::tanh(lambda) + L));
+  if (grounded) b = std::min(b, std::log(0.9 * w * L));
+  for (int it = 0; it < 200; ++it) {
+    double r[2], ra[2], rb[2];
+    const double H = std::exp(a), V = std::exp(b);
+    residual(H, V, r);
+    if (std::abs(r[0]) + std::abs(r[1]) < 1e-9 * (L + 1)) break;
+    const double d = 1e-7;
+    residual(H * std::exp(d), V, ra);
+    residual(H, V * std::exp(d), rb);
+    const double j00 = (ra[0] - r[0]) / d, j10 = (ra[1] - r[1]) / d, j01 = (rb[0] - r[0]) / d,
+                 j11 = (rb[1] - r[1]) / d;
+    const double det = j00 * j11 - j01 * j10;
+    double da = -(j11 * r[0] - j01 * r[1]) / det, db = -(-j10 * r[0] + j00 * r[1]) / det;
+    const double big = std::max(std::abs(da), std::abs(db));
+    if (big > 0.5) da *= 0.5 / big, db *= 0.5 / big;  // damped: at most a factor e^0.5 a step
+    a += da;
+    b += db;
+    if (grounded) b = std::min(b, std::log(w * L * (1 - 1e-12)));
+  }
+  const double H = std::exp(a), V = std::exp(b);
+  double r[2];
+  residual(H, V, r);
+  if (std::abs(r[0]) + std::abs(r[1]) > 1e-6 * (L + 1)) return std::nan("");
+  return std::hypot(H, V);
+}
+
+/// A line of the table and what it is compared with.
+struct Line {
+  std::string name;         // the table's label
+  std::string file;         // lines/<file>.txt and lines/<file>.yaml
+  double heave;             // m: the fairlead's heave amplitude, set on both sides (NaN: the config's motion)
+  double duration;          // s simulated
+  // The closed form's data: unstretched length [m], submerged weight [N/m], EA [N], fairlead x out and z up
+  // from the lower end [m], a grounded part; for the payout (vertical), the load's submerged weight [N].
+  double L, w, EA, x, z;
+  bool grounded;
+  double load_weight = 0.0;
+  bool payout = false;
+  double published_static = 0.0;  // kN: the published fairlead tension MoorDyn's test checks
+  std::string series;             // under MoorDyn's tests/Mooring/: the reference's fairlead tension series
+  double series_start = 10.0;     // s: the run's time at the series' t = 0 (and its window's start)
+  std::string series_name = "OrcaFlex";
+};
+
+/// The submerged weight of a cylinder line [N/m].
+double submergedWeight(double mass_per_length, double diameter, double g = 9.80665, double rho = 1025.0) {
+  return (mass_per_length - rho * kPi * diameter * diameter / 4) * g;
+}
+
+/// The fairlead's prescribed motion (the project config's base.motion, a vertical sine): its height [m]
+/// at t [s].
+struct Heave {
+  Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  // m, world axes (z up)
+  double period = 10.0;                                 // s
+  Eigen::Vector3d at(double t) const { return amplitude * std::sin(2 * kPi * t / period); }
+};
+
+/// One side's run: the fairlead tension [N] every kSample s from t = 0 (static) and the wall time of
+/// the stepping [s].
+struct Run {
+  std::vector<double> t, tension;
+  double wall = 0.0, dt = 0.0;
+  bool ok = true;
+  std::string note;
+};
+
+/// The winch speed [m/s] the project's winch ran at, every kSample s: MoorDyn's line follows it.
+struct Deployment {
+  std::vector<double> speed;
+};
+
+/// MoorDyn writes to stdout while reading a file and solving its initial condition: muted around those
+/// (MDB_VERBOSE=1 in the environment: not muted, and every run's tension series printed).
+const bool kVerbose = std::getenv("MDB_VERBOSE") != nullptr;
+struct MuteStdout {
+  int saved = -1;
+  MuteStdout() {
+    if (kVerbose) return;
+    std::fflush(stdout);
+    std::cout.flush();
+    saved = dup(1);
+    FILE* null = std::fopen("/dev/null", "w");
+    dup2(fileno(null), 1);
+    std::fclose(null);
+  }
+  ~MuteStdout() {
+    if (saved < 0) return;
+    std::fflush(stdout);
+    std::cout.flush();
+    dup2(saved, 1);
+    close(saved);
+  }
+};
+
+/// `per_step`: one MoorDyn_Step call per MoorDyn time step; otherwise one call per 0.1 s sample, as
+/// MoorDyn's chain test drives it (MoorDyn then takes its steps within the call).
+Run runMoorDyn(const std::string& file, const Heave& heave, double duration, const Deployment* deploy,
+               bool per_step) {
+  Run run;
+  MoorDyn md;
+  {
+    MuteStdout mute;
+    md = MoorDyn_Create(file.c_str());
+    if (md && !kVerbose) MoorDyn_SetVerbosity(md, MOORDYN_NO_OUTPUT);
+  }
+  if (!md) return run.ok = false, run.note = "MoorDyn_Create failed", run;
+  unsigned int dof = 0;
+  MoorDyn_NCoupledDOF(md, &dof);
+  if (dof != 3) return MoorDyn_Close(md), run.ok = false, run.note = "expected one coupled point", run;
+  MoorDynLine line = MoorDyn_GetLine(md, 1);
+  // Initialized at rest, as MoorDyn's own test does: with the fairlead's velocity its internal damping
+  // would put the velocity jump into the first tension read.
+  double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0}, f[3];
+  int status;
+  {
+    MuteStdout mute;
+    status = MoorDyn_Init(md, x, xd);  // its initial condition solve (dynamic relaxation): not timed
+  }
+  if (status != MOORDYN_SUCCESS) return MoorDyn_Close(md), run.ok = false, run.note = "MoorDyn_Init failed", run;
+  MoorDyn_GetDt(md, &run.dt);
+  if (kVerbose) {
+    const int one = 1;
+    float fh, fv, ah, av;
+    MoorDyn_GetFASTtens(md, &one, &fh, &fv, &ah, &av);
+    double seg, pf[3];
+    MoorDyn_GetLineFairTen(line, &seg);
+    MoorDyn_GetPointForce(MoorDyn_GetPoint(md, 2), pf);
+    std::printf("MoorDyn static: GetFASTtens %.6g N, GetLineFairTen %.6g N, GetPointForce %.6g N (%g %g %g)\n",
+                std::hypot(fh, fv), seg, std::sqrt(pf[0] * pf[0] + pf[1] * pf[1] + pf[2] * pf[2]), pf[0], pf[1], pf[2]);
+  }
+  // The fairlead tension: the force the line puts on the vessel's point, as cable_dynamics' base_force.
+  // Not MoorDyn_GetFASTtens: its vertical part takes the end node's mass with its added mass times g
+  // off the node's net force instead of its submerged weight, which puts it above the force on the
+  // vessel (+0.6 % on the payout, +6 % on the tether, +1.1 % on WD0050).
+  MoorDynPoint vessel = MoorDyn_GetPoint(md, 2);  // point 2 is the vessel in every lines/*.txt
+  auto norm = [](const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
+  run.t.push_back(0.0);
+  MoorDyn_GetPointForce(vessel, f);  // at rest: the line's static pull [N]
+  run.tension.push_back(norm(f));
+  // Driven as a coupled code drives it: each call gets the fairlead's position now and the secant
+  // velocity to the call's end, so that its path is the sine's chord, continuous (a tangent velocity
+  // would jump the position back a few mm every call). Per step, the chord is the step's; per 0.1 s
+  // sample, the secant's velocity jumps every 0.1 s hit the stiff line (the jumper's dynamic error
+  // 6.3 % -> 21 %, WD0050's 8.6 % -> 13 %).
+  const int samples = int(std::lround(duration / kSample));
+  double t = 0.0;
+  for (int k = 0; k < samples && run.ok; ++k) {
+    const double until = (k + 1) * kSample - 0.5 * run.dt;
+    // The payout: the project winch's speed at this sample, as the line's unstretched length rate, which
+    // MoorDyn integrates within its steps (MoorDyn_SetLineUnstretchedLength every 0.1 s as well made its
+    // line diverge, NaN at 1.85 s).
+    if (deploy && k < int(deploy->speed.size())) MoorDyn_SetLineUnstretchedLengthVel(line, deploy->speed[k]);
+    const Clock::time_point start = Clock::now();
+    while (t < until && run.ok) {
+      double h = per_step ? run.dt : (k + 1) * kSample - t;  // s
+      const Eigen::Vector3d now = heave.at(t), next = heave.at(t + h);
+      for (int i = 0; i < 3; ++i) x[i] = now[i], xd[i] = (next[i] - now[i]) / h;
+      run.ok = MoorDyn_Step(md, x, xd, f, &t, &h) == MOORDYN_SUCCESS;  // t advances by h
+    }
+    run.wall += std::chrono::duration<double>(Clock::now() - start).count();
+    run.t.push_back(t);
+    run.tension.push_back(norm(f));  // the force on the coupled point MoorDyn_Step returns [N]
+  }
+  if (!run.ok) run.note = "MoorDyn_Step failed";
+  if (deploy) {  // where MoorDyn's integration of the payout rate ended
+    double length;
+    MoorDyn_GetLineUnstretchedLength(line, &length);
+    char note[64];
+    std::snprintf(note, sizeof note, "line ends at %.3f m", length);
+    run.note += note;
+  }
+  MoorDyn_Close(md);
+  return run;
+}
+
+/// The project's config `yaml` with `overrides` (key=value, as cable_sim's --set), for RK4 at its
+/// recommended step (computed once into *rk4_dt) or the implicit integrator at 10 ms.
+CableParams projectParams(const std::string& yaml, std::vector<std::string> overrides, bool rk4, double* rk4_dt) {
+  if (!rk4) {
+    overrides.insert(overrides.end(), {"simulation.integrator=implicit", "simulation.dt=0.01"});
+    return cable_dynamics::loadConfigFile(yaml, overrides);
+  }
+  if (*rk4_dt <= 0) {  // the recommended RK4 step (half the stable limit), from a simulator built once
+    std::vector<std::string> probe_overrides = overrides;
+    probe_overrides.push_back("simulation.integrator=implicit");
+    CableSimulator probe(cable_dynamics::loadConfigFile(yaml, probe_overrides));
+    *rk4_dt = probe.estimateStableTimeStep();
+  }
+  std::ostringstream dt;
+  dt.precision(17);
+  dt << "simulation.dt=" << *rk4_dt;
+  overrides.insert(overrides.end(), {"simulation.integrator=rk4", dt.str()});
+  return cable_dynamics::loadConfigFile(yaml, overrides);
+}
+
+Run runProject(const CableParams& params, double duration, Deployment* record) {
+  Run run;
+  CableSimulator sim(params);  // with initial.mode equilibrium, the statics: not timed
+  run.dt = sim.dt();
+  cable_dynamics::SimulationSnapshot snap;
+  auto fairlead = [&] {
+    sim.snapshot(snap);
+    if (record) {  // the deployment at this sample, for MoorDyn's line to follow
+      record->speed.push_back(snap.winch_speed);
+    }
+    return sim.hasWinch() ? snap.line_pull : snap.chain.base_force.norm();  // N
+  };
+  run.t.push_back(0.0);
+  run.tension.push_back(fairlead());
+  {  // the static tension: the same equilibrium with the fairlead at rest (t = 0 has its heave velocity)
+    CableParams still = params;
+    still.base.motion.amplitude.setZero();
+    CableSimulator at_rest(still);
+    cable_dynamics::SimulationSnapshot rest;
+    at_rest.snapshot(rest);
+    run.tension[0] = at_rest.hasWinch() ? rest.line_pull : rest.chain.base_force.norm();
+  }
+  const int samples = int(std::lround(duration / kSample));
+  for (int k = 0; k < samples && run.ok; ++k) {
+    const double until = (k + 1) * kSample - 0.5 * run.dt;
+    const Clock::time_point start = Clock::now();
+    while (sim.time() < until && run.ok) {
+      const cable_dynamics::StepReport report = sim.step();
+      run.ok = report.ok;
+      if (!report.ok) run.note = report.message;
+    }
+    run.wall += std::chrono::duration<double>(Clock::now() - start).count();
+    run.t.push_back(sim.time());
+    run.tension.push_back(fairlead());
+  }
+  if (sim.retriedSteps() > 0) run.note += std::to_string(sim.retriedSteps()) + " steps retried";
+  return run;
+}
+
+/// A reference fairlead tension series of MoorDyn's tests [N] against the run's time [s] (`start` s into
+/// the run at its t = 0): the chains' OrcaFlex files (tab-separated: t, x, z, fairlead tension [kN], ...;
+/// their motion file starts at t = -10 s), the jumper's (t, top tension [kN]); empty when not found.
+std::vector<std::pair<double, double>> readSeries(const std::string& path, double start) {
+  std::vector<std::pair<double, double>> series;
+  std::ifstream in(path);
+  for (std::string row; std::getline(in, row);) {
+    std::replace(row.begin(), row.end(), ',', ' ');
+    std::istringstream fields(row);
+    std::vector<double> v;
+    for (double value; fields >> value;) v.push_back(value);
+    if (v.size() >= 4) series.push_back({v[0] + start, 1e3 * v[3]});
+    else if (v.size() == 2) series.push_back({v[0] + start, 1e3 * v[1]});
+  }
+  return series;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s <lines dir> [reps] [MoorDyn source dir]\n", argv[0]);
+    return 2;
+  }
+  const std::string dir = argv[1];
+  const int reps = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
+  const std::string source = argc > 3 ? argv[3] : "";
+  const double w_chain = submergedWeight(390.0, 0.252);
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<Line> lines = {
+      // MoorDyn's validation motions: ZZP1_A1 heaves 2 m, ZZP1_A2 5 m, both at a 10 s period.
+      {"wd0050", "wd0050", 2.0, 30.0, 410.0, w_chain, 1.674e9, 400.0, 50.0, true, 0.0, false, 991.6, "QuasiStatic/WD0050_Chain_ZZP1_A1.txt"},
+      {"wd0200", "wd0200", 2.0, 30.0, 760.0, w_chain, 1.674e9, 700.0, 200.0, true, 0.0, false, 2065.4, "QuasiStatic/WD0200_Chain_ZZP1_A1.txt"},
+      {"wd0600", "wd0600", 2.0, 30.0, 1700.0, w_chain, 1.674e9, 1500.0, 600.0, true, 0.0, false, 5232.6, "QuasiStatic/WD0600_Chain_ZZP1_A1.txt"},
+      {"wd0050a2", "wd0050", 5.0, 30.0, 410.0, w_chain, 1.674e9, 400.0, 50.0, true, 0.0, false, 991.6, "QuasiStatic/WD0050_Chain_ZZP1_A2.txt"},
+      {"wd0200a2", "wd0200", 5.0, 30.0, 760.0, w_chain, 1.674e9, 700.0, 200.0, true, 0.0, false, 2065.4, "QuasiStatic/WD0200_Chain_ZZP1_A2.txt"},
+      {"wd0600a2", "wd0600", 5.0, 30.0, 1700.0, w_chain, 1.674e9, 1500.0, 600.0, true, 0.0, false, 5232.6, "QuasiStatic/WD0600_Chain_ZZP1_A2.txt"},
+      // Lowe and Langley's (2006) flexible jumper, case 1 (the top surging 10 m at 27 s; MoorDyn's test ramps
+      // the motion in over a period, both sides here start the sine at once): its reference series, from
+      // 27 s on, and the top tension MoorDyn's test checks at rest, |(11.40, 0, 45.71)| kN.
+      {"jumper", "jumper", std::nan(""), 108.0, 170.0, submergedWeight(165.0, 0.396, 9.807, 1000.0), 500.0e6, 100.0,
+       50.0, false, 0.0, false, 47.11, "lowe_and_langley_2006/Case 1.csv", 27.0, "Lowe-Langley"},
+      {"tether", "tether", 0.5, 40.0, 100.0, submergedWeight(0.6, 0.025), 1.0e6, 40.0, 80.0, false},
+      // The payout: vertical, the load's submerged weight (2000 kg - 1025 kg/m^3 x 0.8 m^3) x g; its
+      // references are w L + W at 20 m (start) and at 50 m (end, static).
+      {"payout", "payout", 0.0, 80.0, 50.0, submergedWeight(6.5, 0.04), 5.0e7, 0.0, 50.0, false,
+       (2000.0 - 1025.0 * 0.8) * 9.80665, true},
+  };
+
+  std::printf("moordyn_bench: %d repetitions; wall time = stepping only, [ms per simulated s], median (min-max)\n",
+              reps);
+  std::printf("%-8s %-14s %8s %-24s %10s %-26s %-22s %-22s %s\n", "line", "side", "dt [ms]",
+              "wall [ms/sim s]", "static [kN]", "static error [%]", "dyn. max/min [kN] (a)",
+              "dynamic error [%]", "note");
+  const char* only = std::getenv("MDB_ONLY");  // one line of the table, by name (debugging)
+  for (const Line& line : lines) {
+    if (only && line.name != only) continue;
+    const std::string yaml = dir + "/" + line.file + ".yaml", txt = dir + "/" + line.file + ".txt";
+    char amplitude[64];
+    std::snprintf(amplitude, sizeof amplitude, "base.motion.amplitude=[0, 0, %.17g]", line.heave);
+    std::vector<std::string> heave_override;
+    if (!std::isnan(line.heave)) heave_override.push_back(amplitude);
+    // The references.
+    double ref_inext, ref_elastic, ref_end = 0.0;
+    if (line.payout) {
+      ref_inext = ref_elastic = line.w * 20.0 + line.load_weight;  // at the start, 20 m deployed
+      ref_end = line.w * line.L + line.load_weight;                // at the end, 50 m
+    } else {
+      ref_inext = catenaryFairleadTension(line.L, line.w, inf, line.x, line.z, line.grounded);
+      ref_elastic = catenaryFairleadTension(line.L, line.w, line.EA, line.x, line.z, line.grounded);
+    }
+    std::vector<std::pair<double, double>> orcaflex;  // the reference series (OrcaFlex's for the chains)
+    if (!line.series.empty() && !source.empty())
+      orcaflex = readSeries(source + "/tests/Mooring/" + line.series, line.series_start);
+    Heave heave;
+    {
+      const CableParams p = cable_dynamics::loadConfigFile(yaml, heave_override);
+      heave.amplitude = p.base.motion.amplitude;
+      heave.period = p.base.motion.period;
+    }
+    // The sides, run one after the other in each repetition.
+    const char* names[4] = {"cable_dyn RK4", "cable_dyn impl", "MoorDyn RK2", "MoorDyn 0.1s"};
+    std::vector<double> walls[4];
+    Run first[4];
+    double rk4_dt = 0.0;
+    Deployment deploy;
+    for (int rep = 0; rep < reps; ++rep) {
+      for (int side = 0; side < 4; ++side) {
+        Run run;
+        try {
+          if (side < 2)
+            run = runProject(projectParams(yaml, heave_override, side == 0, &rk4_dt), line.duration,
+                             line.payout && side == 0 && rep == 0 ? &deploy : nullptr);
+          else
+            run = runMoorDyn(txt, heave, line.duration, line.payout ? &deploy : nullptr, side == 2);
+        } catch (const std::exception& e) {
+          run.ok = false;
+          run.note = e.what();
+        }
+        walls[side].push_back(run.wall / line.duration);
+        if (rep == 0) first[side] = run;
+        if (rep == 0 && kVerbose) {
+          std::printf("%s %s:", line.name.c_str(), names[side]);
+          for (size_t i = 0; i < run.t.size(); i += 5) std::printf(" %.1f:%.5g", run.t[i], run.tension[i]);
+          std::printf("\n");
+        }
+      }
+    }
+    // The table's rows.
+    std::printf("%-8s reference: static fairlead tension %.4g kN inextensible, %.4g kN elastic (closed forms)",
+                line.name.c_str(), ref_inext / 1e3, ref_elastic / 1e3);
+    if (line.published_static > 0) std::printf(", %.1f kN published (MoorDyn's test)", line.published_static);
+    if (line.payout) std::printf("; %.4g kN at 50 m (w L + W)", ref_end / 1e3);
+    double o_max = 0, o_min = 0;
+    if (!orcaflex.empty()) {
+      o_max = -1e300, o_min = 1e300;
+      for (const auto& s : orcaflex) o_max = std::max(o_max, s.second), o_min = std::min(o_min, s.second);
+      std::printf("; %s dynamic %.1f / %.1f kN over t = %g-%g s", line.series_name.c_str(), o_max / 1e3, o_min / 1e3,
+                  orcaflex.front().first, orcaflex.back().first);
+    }
+    std::printf("\n");
+    for (int side = 0; side < 4; ++side) {
+      const Run& r = first[side];
+      const auto mm = std::minmax_element(walls[side].begin(), walls[side].end());
+      char wall[64], stat[96], dyn[64], err[64];
+      std::snprintf(wall, sizeof wall, "%.3g (%.3g-%.3g)", 1e3 * median(walls[side]), 1e3 * *mm.first, 1e3 * *mm.second);
+      if (r.tension.empty() || !r.ok) {
+        std::printf("%-8s %-14s %8.3f %-24s FAILED: %s\n", line.name.c_str(), names[side], r.dt * 1e3, wall,
+                    r.note.c_str());
+        continue;
+      }
+      const double t0 = r.tension.front();
+      if (line.published_static > 0)
+        std::snprintf(stat, sizeof stat, "%+.1f inext %+.1f el %+.1f pub", 100 * (t0 / ref_inext - 1),
+                      100 * (t0 / ref_elastic - 1), 100 * (t0 / (1e3 * line.published_static) - 1));
+      else
+        std::snprintf(stat, sizeof stat, "%+.1f inext %+.1f el", 100 * (t0 / ref_inext - 1), 100 * (t0 / ref_elastic - 1));
+      // The dynamic part: over OrcaFlex's window where there is one (errors as MoorDyn's test computes
+      // them: the largest difference of the tension less its static value, over twice the reference's
+      // largest such excursion), the tether after its first heave period (the start from rest is a jolt),
+      // the payout over the whole run (the winch starts at rest; its end against w L + W).
+      const double from = !orcaflex.empty() ? line.series_start : line.payout ? 0.0 : heave.period;  // s
+      double d_max = -1e300, d_min = 1e300;
+      for (size_t i = 0; i < r.t.size(); ++i)
+        if (r.t[i] >= from - 1e-6) d_max = std::max(d_max, r.tension[i]), d_min = std::min(d_min, r.tension[i]);
+      std::snprintf(dyn, sizeof dyn, "%.4g / %.4g", d_max / 1e3, d_min / 1e3);
+      if (!orcaflex.empty()) {
+        double worst = 0, excursion = 0;
+        for (const auto& s : orcaflex) {
+          const size_t i = std::min(r.t.size() - 1, size_t(std::lround(s.first / kSample)));
+          const double ref = s.second - 1e3 * line.published_static;
+          worst = std::max(worst, std::abs((r.tension[i] - t0) - ref));
+          excursion = std::max(excursion, std::abs(ref));
+        }
+        std::snprintf(err, sizeof err, "%.1f (vs %s)", 100 * worst / (2 * excursion), line.series_name.c_str());
+      } else if (line.payout) {
+        // the last 5 s (the winch stopped at 65 s): their mean, an elastic line still bounces axially
+        double sum = 0;
+        int count = 0;
+        for (size_t i = 0; i < r.t.size(); ++i)
+          if (r.t[i] > line.duration - 5.0 + 1e-6) sum += r.tension[i], ++count;
+        std::snprintf(err, sizeof err, "end %+.2f (vs w L + W)", 100 * (sum / count / ref_end - 1));
+      } else {
+        std::snprintf(err, sizeof err, "-");
+      }
+      std::printf("%-8s %-14s %8.3f %-24s %10.4g %-26s %-22s %-22s %s\n", line.name.c_str(), names[side], r.dt * 1e3,
+                  wall, t0 / 1e3, stat, dyn, err, r.note.c_str());
+    }
+    if (line.payout) {  // MoorDyn's line created at the paid-out length: its static tension only
+      MoorDyn md;
+      double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0};
+      double f[3] = {0, 0, 0};
+      {
+        MuteStdout mute;
+        md = MoorDyn_Create((dir + "/payout50.txt").c_str());
+        if (md && !kVerbose) MoorDyn_SetVerbosity(md, MOORDYN_NO_OUTPUT);
+        if (md && MoorDyn_Init(md, x, xd) == MOORDYN_SUCCESS) MoorDyn_GetPointForce(MoorDyn_GetPoint(md, 2), f);
+      }
+      if (md) MoorDyn_Close(md);
+      const double t = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+      std::printf("%-8s %-14s %8s %-24s %10.4g %+.2f vs w L + W at 50 m (lines/payout50.txt)\n", line.name.c_str(),
+                  "MoorDyn 50 m", "-", "static only", t / 1e3, 100 * (t / ref_end - 1));
+    }
+    std::fflush(stdout);
+  }
+  std::printf(
+      "Sides: cable_dynamics' RK4 at its recommended step and its implicit integrator at 10 ms; MoorDyn (RK2, its\n"
+      "  own step) called once per MoorDyn step (RK2 row: its errors are the ones to read) and once per 0.1 s as\n"
+      "  its chain test calls it (0.1s row: less call overhead, velocity jumps every 0.1 s).\n"
+      "static error: against the inextensible (inext) and the elastic (el) catenary, closed forms, and the published\n"
+      "  value MoorDyn's tests check (pub: the chains' quasi-static codes, tests/quasi_static_chain.cpp; the\n"
+      "  jumper's, tests/lowe_and_langley_2006.cpp). cable_dynamics' links are rigid: it matches the inextensible\n"
+      "  form; the elastic tools sit on the elastic one.\n"
+      "(a) the chains over t = 10-30 s (OrcaFlex's window), the jumper over t = 27-107 s (Lowe and Langley's), the\n"
+      "  tether after its first heave period, the payout over the whole run. dynamic error, the chains and the\n"
+      "  jumper: max |(T - T_static) - (T_ref - T_pub)| over the window / (2 max |T_ref - T_pub|), as MoorDyn's\n"
+      "  chain test computes it (its bound: 15 %%); the payout: the mean over the last 5 s against w L + W at 50 m.\n"
+      "Tensions: the force of the line on the fairlead (cable_dynamics' base_force or line_pull, MoorDyn's force\n"
+      "  on its coupled point), every 0.1 s.\n");
+  return 0;
+}
