@@ -165,6 +165,16 @@ TEST(NoAllocation, ImplicitStep) {
                       "load.fixity=clamped"});
 }
 
+TEST(NoAllocation, AxialElasticity) {
+  // The stretches (docs/MODEL.md section 12): RK4 (the prismatic joint in the recursion, the largest
+  // tension and the snaps watched after each step) and the implicit step (its stretch vectors and the
+  // fold in its recursion), a damper and a seabed with them.
+  const std::string axial = "cable.axial_stiffness=2.0e5";
+  expectNoAllocation({axial, "cable.axial_damping=100.0", "simulation.dt=0.0002"});
+  expectNoAllocation({axial, "cable.axial_damping=100.0", "simulation.integrator=implicit", "simulation.dt=0.01",
+                      "cable.stiffness={model: bending, bending_rigidity: 50.0}", "seabed={depth: 15.0}"});
+}
+
 TEST(NoAllocation, SectionsAndAttachments) {
   // Per-link section properties, and attachments with drag (their own loop in the drag pass), in both
   // formulations and in a depth profile (the statics' and the dynamics' point-by-point path).

@@ -92,6 +92,28 @@ def test_hanging_chain_tension_is_the_submerged_weight_below():
     np.testing.assert_allclose(ends[:, :2], 0.0, atol=1e-9)
 
 
+def test_an_elastic_chain_stretches_by_the_weight_below():
+    """With cable.axial_stiffness each link stretches by T l / EA under the tension at its far end (the
+    weight below it: its own end carries everything outboard); the snapshot carries the strains."""
+    cfg = hanging_config()
+    ea = 2.0e5  # [N]
+    cfg["cable"]["axial_stiffness"] = ea
+    cfg["initial"] = {"mode": "equilibrium"}
+    sim = cable_dynamics.Simulator.from_dict(cfg)
+    s = sim.snapshot()
+    below = submerged_weight_below(cfg)
+    n, l = cfg["cable"]["links"], cfg["cable"]["length"] / cfg["cable"]["links"]
+    link = below[0] - below[1]
+    far = below - link  # the tension at each link's far end [N]
+    # The elastic statics' fixed point stops at 1e-12 of the length; the sums are ~10 terms.
+    np.testing.assert_allclose(s.strain, far / ea, rtol=1e-9)
+    np.testing.assert_allclose(s.stretched_length, l * (1.0 + far / ea), rtol=1e-12)
+    np.testing.assert_allclose(s.far_tension, far, rtol=1e-9)
+    assert s.slack_links == 0
+    # The tip hangs the stretched length down.
+    assert s.link_ends[-1, 2] == pytest.approx(n * l + (far / ea * l).sum(), rel=1e-12)
+
+
 # --- the seabed ------------------------------------------------------------------------------------
 
 def test_a_chain_on_the_seabed_rests_its_weight_on_it():
