@@ -3,7 +3,9 @@
 // config of the same line):
 //   - the step each side takes: MoorDyn's own (its CFL rule, RK2, its default; called once per step, and
 //     once per 0.1 s as its chain test calls it), cable_dynamics' RK4 at its recommended step
-//     (CableSimulator::estimateStableTimeStep) and its implicit integrator at 10 ms;
+//     (CableSimulator::estimateStableTimeStep) and its implicit integrator at 10 ms, both with the line's
+//     EA and axial damping as MoorDyn's (lines/*.yaml), and RK4 with rigid links (EA and c_a set to 0:
+//     the project before its axial elasticity; the payout has no EA, a winch does not carry it yet);
 //   - wall time per simulated second of the stepping alone (construction, statics and MoorDyn's initial
 //     condition solve are outside the clock), median over [reps] repetitions, the three sides run one
 //     after the other in every repetition so that they share the machine's load;
@@ -361,7 +363,7 @@ int main(int argc, char** argv) {
 
   std::printf("moordyn_bench: %d repetitions; wall time = stepping only, [ms per simulated s], median (min-max)\n",
               reps);
-  std::printf("%-8s %-14s %8s %-24s %10s %-26s %-22s %-22s %s\n", "line", "side", "dt [ms]",
+  std::printf("%-8s %-19s %8s %-24s %10s %-26s %-22s %-22s %s\n", "line", "side", "dt [ms]",
               "wall [ms/sim s]", "static [kN]", "static error [%]", "dyn. max/min [kN] (a)",
               "dynamic error [%]", "note");
   const char* only = std::getenv("MDB_ONLY");  // one line of the table, by name (debugging)
@@ -391,20 +393,29 @@ int main(int argc, char** argv) {
       heave.period = p.base.motion.period;
     }
     // The sides, run one after the other in each repetition.
-    const char* names[4] = {"cable_dyn RK4", "cable_dyn impl", "MoorDyn RK2", "MoorDyn 0.1s"};
-    std::vector<double> walls[4];
-    Run first[4];
-    double rk4_dt = 0.0;
+    // The rigid RK4 side: the same config with EA and c_a 0 (the lines without EA skip it).
+    const bool elastic = cable_dynamics::loadConfigFile(yaml, heave_override).axial_stiffness > 0.0;
+    std::vector<std::string> rigid_override = heave_override;
+    rigid_override.insert(rigid_override.end(), {"cable.axial_stiffness=0", "cable.axial_damping=0"});
+    constexpr int kSides = 5;
+    const char* names[kSides] = {"cable_dyn RK4", "cable_dyn impl", "cable_dyn RK4 rigid", "MoorDyn RK2",
+                                 "MoorDyn 0.1s"};
+    std::vector<double> walls[kSides];
+    Run first[kSides];
+    double rk4_dt = 0.0, rk4_rigid_dt = 0.0;
     Deployment deploy;
     for (int rep = 0; rep < reps; ++rep) {
-      for (int side = 0; side < 4; ++side) {
+      for (int side = 0; side < kSides; ++side) {
+        if (side == 2 && !elastic) continue;
         Run run;
         try {
           if (side < 2)
             run = runProject(projectParams(yaml, heave_override, side == 0, &rk4_dt), line.duration,
                              line.payout && side == 0 && rep == 0 ? &deploy : nullptr);
+          else if (side == 2)
+            run = runProject(projectParams(yaml, rigid_override, true, &rk4_rigid_dt), line.duration, nullptr);
           else
-            run = runMoorDyn(txt, heave, line.duration, line.payout ? &deploy : nullptr, side == 2);
+            run = runMoorDyn(txt, heave, line.duration, line.payout ? &deploy : nullptr, side == 3);
         } catch (const std::exception& e) {
           run.ok = false;
           run.note = e.what();
@@ -431,13 +442,14 @@ int main(int argc, char** argv) {
                   orcaflex.front().first, orcaflex.back().first);
     }
     std::printf("\n");
-    for (int side = 0; side < 4; ++side) {
+    for (int side = 0; side < kSides; ++side) {
+      if (side == 2 && !elastic) continue;
       const Run& r = first[side];
       const auto mm = std::minmax_element(walls[side].begin(), walls[side].end());
       char wall[64], stat[96], dyn[64], err[64];
       std::snprintf(wall, sizeof wall, "%.3g (%.3g-%.3g)", 1e3 * median(walls[side]), 1e3 * *mm.first, 1e3 * *mm.second);
       if (r.tension.empty() || !r.ok) {
-        std::printf("%-8s %-14s %8.3f %-24s FAILED: %s\n", line.name.c_str(), names[side], r.dt * 1e3, wall,
+        std::printf("%-8s %-19s %8.3f %-24s FAILED: %s\n", line.name.c_str(), names[side], r.dt * 1e3, wall,
                     r.note.c_str());
         continue;
       }
@@ -475,7 +487,7 @@ int main(int argc, char** argv) {
       } else {
         std::snprintf(err, sizeof err, "-");
       }
-      std::printf("%-8s %-14s %8.3f %-24s %10.4g %-26s %-22s %-22s %s\n", line.name.c_str(), names[side], r.dt * 1e3,
+      std::printf("%-8s %-19s %8.3f %-24s %10.4g %-26s %-22s %-22s %s\n", line.name.c_str(), names[side], r.dt * 1e3,
                   wall, t0 / 1e3, stat, dyn, err, r.note.c_str());
     }
     if (line.payout) {  // MoorDyn's line created at the paid-out length: its static tension only
@@ -490,19 +502,21 @@ int main(int argc, char** argv) {
       }
       if (md) MoorDyn_Close(md);
       const double t = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-      std::printf("%-8s %-14s %8s %-24s %10.4g %+.2f vs w L + W at 50 m (lines/payout50.txt)\n", line.name.c_str(),
+      std::printf("%-8s %-19s %8s %-24s %10.4g %+.2f vs w L + W at 50 m (lines/payout50.txt)\n", line.name.c_str(),
                   "MoorDyn 50 m", "-", "static only", t / 1e3, 100 * (t / ref_end - 1));
     }
     std::fflush(stdout);
   }
   std::printf(
-      "Sides: cable_dynamics' RK4 at its recommended step and its implicit integrator at 10 ms; MoorDyn (RK2, its\n"
+      "Sides: cable_dynamics' RK4 at its recommended step and its implicit integrator at 10 ms with the line's EA\n"
+      "  and axial damping as MoorDyn's (lines/*.yaml; the payout none: a winch does not carry EA yet), RK4 rigid\n"
+      "  at its recommended step with EA and c_a set to 0 (the inextensible links); MoorDyn (RK2, its\n"
       "  own step) called once per MoorDyn step (RK2 row: its errors are the ones to read) and once per 0.1 s as\n"
       "  its chain test calls it (0.1s row: less call overhead, velocity jumps every 0.1 s).\n"
       "static error: against the inextensible (inext) and the elastic (el) catenary, closed forms, and the published\n"
       "  value MoorDyn's tests check (pub: the chains' quasi-static codes, tests/quasi_static_chain.cpp; the\n"
-      "  jumper's, tests/lowe_and_langley_2006.cpp). cable_dynamics' links are rigid: it matches the inextensible\n"
-      "  form; the elastic tools sit on the elastic one.\n"
+      "  jumper's, tests/lowe_and_langley_2006.cpp). Rigid links sit on the inextensible form, elastic ones\n"
+      "  (cable_dynamics with EA, MoorDyn) on the elastic one.\n"
       "(a) the chains over t = 10-30 s (OrcaFlex's window), the jumper over t = 27-107 s (Lowe and Langley's), the\n"
       "  tether after its first heave period, the payout over the whole run. dynamic error, the chains and the\n"
       "  jumper: max |(T - T_static) - (T_ref - T_pub)| over the window / (2 max |T_ref - T_pub|), as MoorDyn's\n"
