@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <map>
+#include <string>
 #include <new>
 
 #include <gtest/gtest.h>
 
+#include "cable_dynamics/dynamics/state_layout.h"
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/ros/finite_messages.h"
 #include "cable_dynamics/ros/input_guard.h"
@@ -306,6 +309,59 @@ TEST(WinchOutputs, EveryNewFieldIsCheckedFinite) {
     bad.winch.*field = kNan;
     EXPECT_FALSE(allFinite(bad));
   }
+}
+
+TEST(AxialOutputs, CableStateAndDiagnosticsCarryTheStretches) {
+  // A 20 kg mass on a 4-link line in air, its first link slack by 0.1 m: it falls and snaps the line taut.
+  // cable_state carries each link's strain, the slack links, the largest tension and the snaps as the
+  // simulator has them; /diagnostics names them; the filling allocates nothing.
+  const CableParams p = loadConfigString(
+      "cable: {links: 4, length: 4.0, diameter: 0.01, mass_per_length: 0.1, axial_stiffness: 1.0e5, "
+      "stiffness: {model: bending}}\nload: {mass: 20.0}\nfluid: {density: 0.0}\n"
+      "simulation: {integrator: rk4, dt: 0.0001}\n");
+  CableSimulator sim(p);
+  Eigen::VectorXd x = sim.state();
+  x(StateLayout::stretch(p.links, false, 0)) = -0.1;
+  sim.setState(x);
+  CableOutputs o;
+  prepareOutputs(p, prefixed(), "world", o);
+  ASSERT_TRUE(o.state.axial);
+  ASSERT_EQ(o.state.strain.size(), std::size_t(p.links));
+  OutputSource source;
+  source.spring_force = Eigen::VectorXd::Zero(3 * p.links);
+  source.alpha_hint = Eigen::VectorXd::Zero(p.links);
+  NodeStatus status;
+  auto fill = [&] {
+    ASSERT_TRUE(readOutputs(sim, source));
+    status.slack_links = static_cast<unsigned>(source.snapshot.chain.slack_links);
+    status.snaps = static_cast<unsigned>(source.snapshot.snaps);
+    status.largest_tension = source.snapshot.largest_tension;
+    g_allocations = 0;
+    g_counting = true;
+    fillCableState(source, status, ros::Time(1.0), o.state);
+    fillDiagnostics(status, ros::Time(1.0), o.diagnostics);
+    g_counting = false;
+    EXPECT_EQ(g_allocations, 0) << "a cycle's filling allocated";
+    ASSERT_TRUE(allFinite(o));
+  };
+  fill();
+  EXPECT_EQ(o.state.slack_links, 1u);
+  EXPECT_EQ(o.state.snaps, 0u);
+  // 0.19 s: it has fallen 0.1 m (0.14 s), snapped the line taut and stretches it (k = 2.5e4 N/m, the
+  // half period 0.09 s); the light links beyond the first ring about their unstretched length.
+  for (int i = 0; i < 1900; ++i) ASSERT_TRUE(sim.step().ok);
+  fill();
+  EXPECT_GE(o.state.snaps, 1u);
+  EXPECT_EQ(o.state.snaps, unsigned(sim.snaps()));
+  EXPECT_EQ(o.state.slack_links, unsigned(source.snapshot.chain.slack_links));
+  EXPECT_DOUBLE_EQ(o.state.max_tension, sim.largestTension());
+  EXPECT_GT(o.state.max_tension, 20.0 * 9.81);  // a snap pulls harder than the weight
+  for (int k = 0; k < p.links; ++k) EXPECT_DOUBLE_EQ(o.state.strain[k], source.snapshot.chain.strain(k));
+  std::map<std::string, std::string> values;
+  for (const auto& kv : o.diagnostics.status[0].values) values[kv.key] = kv.value;
+  EXPECT_EQ(values["snaps"], std::to_string(sim.snaps()));
+  EXPECT_EQ(values["slack links"], std::to_string(source.snapshot.chain.slack_links));
+  EXPECT_NEAR(std::stod(values["largest tension [N]"]), sim.largestTension(), 1e-5 * sim.largestTension());
 }
 
 }  // namespace

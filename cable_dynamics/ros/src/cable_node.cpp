@@ -474,6 +474,9 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   const double scale = options_.tension_scale > 0.0 ? options_.tension_scale : max_tension_seen_;
 
   status_.winch = winchStatus(source_);
+  status_.slack_links = static_cast<unsigned>(source_.snapshot.chain.slack_links);
+  status_.snaps = static_cast<unsigned>(source_.snapshot.snaps);
+  status_.largest_tension = source_.snapshot.largest_tension;
   shapeOutputs(source_.snapshot.first_link, outputs_);  // the deployed links only; no allocation
   fillJointState(source_, stamp, outputs_.joints);
   fillTransforms(source_, options_.base_position, stamp, outputs_.transforms);

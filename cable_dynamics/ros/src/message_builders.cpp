@@ -63,6 +63,9 @@ const char* const kWinchKeys[] = {"deployed length [m]", "deployed links", "winc
                                   "winch command",       "links added",    "links removed"};
 constexpr int kWinchCount = sizeof(kWinchKeys) / sizeof(kWinchKeys[0]);
 constexpr int kWinchCommandKey = 4;
+/// With axial elasticity, these come last.
+const char* const kAxialKeys[] = {"slack links", "snaps", "largest tension [N]"};
+constexpr int kAxialCount = sizeof(kAxialKeys) / sizeof(kAxialKeys[0]);
 
 /// Moves the `count` entries of `from` starting at `at` to the end of `to` and erases them from `from`;
 /// within the capacity of `to`, no allocation (moved strings keep their buffers).
@@ -173,8 +176,8 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   diagnostic_msgs::DiagnosticStatus& status = out.diagnostics.status[0];
   status.name = "cable_dynamics: " + (names.prefix.empty() ? std::string("cable") : names.prefix);
   status.hardware_id = names.paper();
-  const bool winch = params.winch.enabled;
-  status.values.resize(kDiagnosticCount + (winch ? kWinchCount : 0));
+  const bool winch = params.winch.enabled, axial = params.stretches();
+  status.values.resize(kDiagnosticCount + (winch ? kWinchCount : 0) + (axial ? kAxialCount : 0));
   for (int i = 0; i < kDiagnosticCount; ++i) {
     status.values[i].key = kDiagnosticKeys[i];
     status.values[i].value.reserve(32);
@@ -182,6 +185,10 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   for (int i = 0; winch && i < kWinchCount; ++i) {
     status.values[kDiagnosticCount + i].key = kWinchKeys[i];
     status.values[kDiagnosticCount + i].value.reserve(64);
+  }
+  for (int i = 0, first = static_cast<int>(status.values.size()) - kAxialCount; axial && i < kAxialCount; ++i) {
+    status.values[first + i].key = kAxialKeys[i];
+    status.values[first + i].value.reserve(32);
   }
 
   // Everything is sized for every slot; the drum's entries are moved aside.
@@ -404,7 +411,12 @@ void fillDiagnostics(const NodeStatus& s, const ros::Time& stamp, diagnostic_msg
                                            double(s.rejected), double(s.stale),    double(s.diverged),
                                            double(s.retried),  s.retried_share,    s.energy_error};
   for (int i = 0; i < kDiagnosticCount; ++i) format(status.values[i].value, i >= 6 && i <= 10 ? "%.0f" : "%.6g", values[i]);
-  if (static_cast<int>(status.values.size()) < kDiagnosticCount + kWinchCount) return;  // no winch
+  const int last = static_cast<int>(status.values.size());
+  if (last >= kDiagnosticCount + kAxialCount && status.values[last - kAxialCount].key == kAxialKeys[0]) {
+    const double axial_values[kAxialCount] = {double(s.slack_links), double(s.snaps), s.largest_tension};
+    for (int i = 0; i < kAxialCount; ++i) format(status.values[last - kAxialCount + i].value, i < 2 ? "%.0f" : "%.6g", axial_values[i]);
+  }
+  if (!s.winch.present) return;  // no winch
   const WinchStatus& w = s.winch;
   const double winch_values[kWinchCount] = {w.deployed_length, double(w.deployed_links), w.speed, w.line_pull, 0.0,
                                             double(w.links_added), double(w.links_removed)};

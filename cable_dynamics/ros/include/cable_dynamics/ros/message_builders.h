@@ -77,6 +77,10 @@ struct NodeStatus {
   bool dropped_recently = false;   ///< simulated time was dropped since the last diagnostics
   unsigned received = 0, rejected = 0, stale = 0, diverged = 0, retried = 0;
   WinchStatus winch;
+  /// Axial elasticity (cable.axial_stiffness): the slack links now, the snaps and the largest tension
+  /// since the last reset (from the snapshot: CableSimulator::snaps, largestTension).
+  unsigned slack_links = 0, snaps = 0;
+  double largest_tension = 0.0;  ///< [N]
 };
 
 /// Sizes and names every message once: 3n joints, 2 + 3n transforms, 5 + kSceneMarkerCount + n markers (the
