@@ -64,6 +64,28 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   return true;
 }
 
+bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends) {
+  // The relative angular acceleration of the two links is affine in the held moment: its value at
+  // zero and its change per unit moment about each axis give the moment that makes it zero.
+  const auto relative = [&](const Eigen::Vector3d& torque, Eigen::Vector3d& out) {
+    model_.holdJoint(joint, torque, ends.time);
+    if (!solve(x, ends, false)) return false;
+    out = data_.links.get(&LinkBlock::omega_rate, joint) - data_.links.get(&LinkBlock::omega_rate, joint - 1);
+    return true;
+  };
+  Eigen::Vector3d free, unit;
+  Eigen::Matrix3d response;
+  bool ok = relative(Eigen::Vector3d::Zero(), free);
+  for (int axis = 0; axis < 3 && ok; ++axis) {
+    ok = relative(Eigen::Vector3d::Unit(axis), unit);
+    response.col(axis) = unit - free;
+  }
+  const Eigen::Vector3d held = ok ? Eigen::Vector3d(response.fullPivLu().solve(-free)) : Eigen::Vector3d::Zero();
+  ok = ok && held.allFinite();
+  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ends.time);  // a failed probe holds nothing
+  return ok;
+}
+
 void ChainDynamics::computeBodyTerms(const Eigen::VectorXd& x, const EndInputs& ends) {
   if (!model_.body().active) return;
   const int n = links();
@@ -73,6 +95,7 @@ void ChainDynamics::computeBodyTerms(const Eigen::VectorXd& x, const EndInputs& 
 
 void ChainDynamics::applyEnds(const EndInputs& ends) {
   if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
+  if (model_.jointHolds() > 0) model_.setHoldTime(ends.time);
   const LinkProperties& p = model_.properties();
   data_.clamp_axis = ends.clamp_moves ? ends.clamp_axis : p.clamp_axis;
   data_.clamp_twist = ends.clamp_moves ? ends.clamp_twist : p.clamp_twist;

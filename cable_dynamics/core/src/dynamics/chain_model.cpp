@@ -56,6 +56,8 @@ ChainModel::ChainModel(const CableParams& params, const ChainModel& like) : Chai
   }
   if (like.firstLink() != first_) deploy(like.firstLink());
   if (has_winch_) setWinchLinkLength(like.properties().length(first_));
+  holds_ = like.holds_;
+  hold_count_ = like.hold_count_;
 }
 
 void ChainModel::setLinkLength(int k, double l) {
@@ -106,6 +108,10 @@ void ChainModel::setLinkLength(int k, double l) {
 
 void ChainModel::deploy(int first) {
   first_ = first;
+  // A held joint at or before the base link is no longer between two deployed links.
+  for (int i = hold_count_ - 1; i >= 0; --i) {
+    if (holds_[i].joint <= first) dropHold(i);
+  }
   for (int k = 0; k < n_; ++k) setLinkLength(k, k < first ? 0.0 : nominal_.length(k));
   // The base's joint (the clamp's springs and dampers, or none for a pin) moves with the base link;
   // the drum's slots have no joints. Every drum slot has the base link's length, so slot 0's configured
@@ -122,6 +128,34 @@ void ChainModel::deploy(int first) {
 
 void ChainModel::setWinchLinkLength(double length) {
   if (length != properties_.length(first_)) setLinkLength(first_, length);
+}
+
+void ChainModel::dropHold(int i) {
+  for (int j = i; j + 1 < hold_count_; ++j) holds_[j] = holds_[j + 1];
+  --hold_count_;
+}
+
+void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, double start) {
+  int i = 0;
+  while (i < hold_count_ && holds_[i].joint != joint) ++i;
+  if (i == hold_count_) {
+    if (hold_count_ == kMaxJointHolds) dropHold(0);
+    i = hold_count_++;
+  }
+  holds_[i] = JointHold{joint, torque, start, torque};
+}
+
+void ChainModel::setHoldTime(double t) {
+  for (int i = 0; i < hold_count_; ++i) {
+    JointHold& h = holds_[i];
+    h.now = jointHoldLeft((t - h.start) / kJointHoldRelease) * h.initial;
+  }
+}
+
+void ChainModel::dropReleasedHolds(double t) {
+  for (int i = hold_count_ - 1; i >= 0; --i) {
+    if (t >= holds_[i].start + kJointHoldRelease) dropHold(i);
+  }
 }
 
 }  // namespace cable_dynamics

@@ -94,9 +94,33 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
 
 }  // namespace
 
+namespace {
+
+/// The winch's new joints' held moments (ChainModel::jointHold) onto the links' torques: +now on link
+/// `joint`, -now on link `joint - 1`.
+void addJointHolds(const ChainModel& model, ChainData& data) {
+  for (int i = 0; i < model.jointHolds(); ++i) {
+    const JointHold& h = model.jointHold(i);
+    data.links.set(&LinkBlock::torque, h.joint, data.links.get(&LinkBlock::torque, h.joint) + h.now);
+    data.links.set(&LinkBlock::torque, h.joint - 1, data.links.get(&LinkBlock::torque, h.joint - 1) - h.now);
+  }
+}
+
+}  // namespace
+
 void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, bool with_dampers) {
   const bool paper = model.stiffnessModel() == StiffnessModel::kPaper;
-  if (paper && !model.hasSprings()) return;  // all zero since construction (the presets)
+  if (paper && !model.hasSprings()) {
+    // Every torque is zero since construction (the presets), but for a winch's held joints: those
+    // write theirs afresh each evaluation, and the evaluation after the last one ends clears them.
+    if (model.jointHolds() == 0 && !data.holds_written) return;
+    for (int k = model.firstBlock() * kBlockLanes; k < model.links(); ++k) {
+      data.links.set(&LinkBlock::torque, k, Eigen::Vector3d::Zero());
+    }
+    addJointHolds(model, data);
+    data.holds_written = model.jointHolds() > 0;
+    return;
+  }
   data.clamp_torque.setZero();
   data.tip_clamp_torque.setZero();
   data.spring_torque.setZero();
@@ -110,6 +134,16 @@ void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::
   for (int k = model.firstLink(); k < model.links(); ++k) {
     data.links.set(&LinkBlock::torque, k, data.spring_torque.col(k) + data.damping_torque.col(k));
   }
+  addJointHolds(model, data);
+}
+
+double jointHoldPower(const ChainModel& model, const ChainData& data) {
+  double power = 0.0;
+  for (int i = 0; i < model.jointHolds(); ++i) {
+    const JointHold& h = model.jointHold(i);
+    power += h.now.dot(data.links.get(&LinkBlock::omega, h.joint) - data.links.get(&LinkBlock::omega, h.joint - 1));
+  }
+  return power;
 }
 
 double damperPower(const ChainModel& model, const ChainData& data) {

@@ -61,6 +61,7 @@ void EndConditions::reset() {
 
 EndInputs EndConditions::at(double t) const {
   EndInputs ends;
+  ends.time = t;
   if (external_base_) {
     ends.base_position = base_position_;
     ends.base_velocity = base_velocity_;

@@ -52,6 +52,16 @@ class ChainDynamics {
   int links() const { return model_.links(); }
   /// The winch deploys slots [first, n) (ChainModel::deploy); between evaluations only.
   void deploy(int first) { model_.deploy(first); }
+  /// Holds joint `joint` (between links joint - 1 and joint, straight and turning together, as just
+  /// after the winch's link split there) with the moment that keeps their relative angular
+  /// acceleration zero at x: the moment the rigid link held there, so that the accelerations, and the
+  /// line pull, are those the unsplit link had; it then falls to zero over kJointHoldRelease
+  /// (ChainModel::holdJoint). Four solves; between steps. Returns false (no hold) when a solve fails.
+  bool holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends);
+  /// Drops the holds whose release has ended by time t [s]; between steps.
+  void dropReleasedHolds(double t) { model_.dropReleasedHolds(t); }
+  /// Drops every hold (a new state).
+  void releaseJoints() { model_.releaseJoints(); }
   /// Replaces the constants by `model` (the same cable: same n; live tuning of its coefficients). The
   /// workspace keeps its sizes; between evaluations only.
   void replaceModel(const ChainModel& model) { model_ = model; }

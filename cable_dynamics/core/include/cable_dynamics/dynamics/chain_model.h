@@ -4,6 +4,7 @@
 ///        the "model" half of the model/data split (ChainData holds everything that changes). Live
 ///        tuning replaces the whole model between steps (CableSimulator::retune).
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,6 +30,29 @@ struct LoadConstants {
   /// The coupling's law (forces/coupling.h) with these gains.
   LoadCoupling coupling() const { return {coupling_stiffness, coupling_damping}; }
 };
+
+/// A joint the winch has just made (docs/MODEL.md section 8, "Line pull through a link added"): when the
+/// winch's link splits, the new joint between its two parts starts with the moment the rigid link held
+/// there (`initial`, a torque on link `joint` from link `joint - 1`, world axes [N m]), which then falls
+/// to zero over kJointHoldRelease seconds from `start` [s]: the joint is released gradually instead of at
+/// once. An internal pair of torques (momentum is unchanged); its power is booked with the losses.
+struct JointHold {
+  int joint = -1;
+  Eigen::Vector3d initial = Eigen::Vector3d::Zero();
+  double start = 0.0;
+  Eigen::Vector3d now = Eigen::Vector3d::Zero();  ///< at the time of the last ChainModel::setHoldTime
+};
+
+/// How long a new joint's held moment takes to fall to zero [s]: several periods of the swing a sudden
+/// release starts (0.4 s in rov_dive.yaml), so the release excites it little.
+constexpr double kJointHoldRelease = 2.0;
+/// The fraction of the held moment left a fraction s of the release in: 1 - (10 s^3 - 15 s^4 + 6 s^5),
+/// from 1 to 0 with zero first and second derivatives at both ends.
+inline double jointHoldLeft(double s) {
+  if (s <= 0.0) return 1.0;
+  if (s >= 1.0) return 0.0;
+  return 1.0 - s * s * s * (10.0 + s * (-15.0 + 6.0 * s));
+}
 
 /// Everything about one cable that does not change during a run. Each constant is computed here, once,
 /// and every pass of the dynamics reads it from here: per link in `lanes` (eight links a block, the
@@ -62,6 +86,17 @@ class ChainModel {
   /// Sets the length of the winch's link (slot firstLink()) [m] and every constant that follows from
   /// it. O(1); the winch calls it for each evaluation.
   void setWinchLinkLength(double length);
+  /// The joints the winch has just made and the moments they hold (JointHold); at most kMaxJointHolds,
+  /// the oldest dropped first. holdJoint replaces the hold of a joint already held.
+  static constexpr int kMaxJointHolds = 4;
+  void holdJoint(int joint, const Eigen::Vector3d& torque, double start);
+  /// Each hold's moment at time t [s] (JointHold::now). O(holds); every evaluation calls it.
+  void setHoldTime(double t);
+  /// Drops the holds whose release has ended by time t [s].
+  void dropReleasedHolds(double t);
+  void releaseJoints() { hold_count_ = 0; }
+  int jointHolds() const { return hold_count_; }
+  const JointHold& jointHold(int i) const { return holds_[i]; }
   StiffnessModel stiffnessModel() const { return properties_.stiffness_model; }
   Formulation formulation() const { return formulation_; }
   /// Any joint spring or damper at all (the paper model with none skips the joint torques).
@@ -119,6 +154,10 @@ class ChainModel {
   std::vector<int> attachment_begin_;
   bool attachment_drag_ = false;
   std::vector<LinkConstants> lanes_;  // C++17's allocator honours the 64-byte alignment
+  std::array<JointHold, kMaxJointHolds> holds_{};
+  int hold_count_ = 0;
+  /// Drops hold i, keeping the others in order.
+  void dropHold(int i);
 };
 
 }  // namespace cable_dynamics

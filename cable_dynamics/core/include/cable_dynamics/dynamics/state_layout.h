@@ -29,6 +29,7 @@ struct StateLayout {
 
 /// What drives the ends during one evaluation (paper frame, z down, origin at the base's rest position).
 struct EndInputs {
+  double time = 0.0;  ///< [s] the simulator's time these inputs are at (the winch's joint holds read it)
   Eigen::Vector3d base_position = Eigen::Vector3d::Zero();      ///< [m]
   Eigen::Vector3d base_velocity = Eigen::Vector3d::Zero();      ///< [m/s]
   Eigen::Vector3d base_acceleration = Eigen::Vector3d::Zero();  ///< [m/s^2]
