@@ -1,3 +1,5 @@
+#include <cstdio>
+#include <cstdlib>
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 
 #include <cassert>
@@ -64,11 +66,11 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   return true;
 }
 
-bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends) {
+bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends, double span) {
   // The relative angular acceleration of the two links is affine in the held moment: its value at
   // zero and its change per unit moment about each axis give the moment that makes it zero.
   const auto relative = [&](const Eigen::Vector3d& torque, Eigen::Vector3d& out) {
-    model_.holdJoint(joint, torque, ends.time);
+    model_.holdJoint(joint, torque, ends.time, ends.winch_deployed, span);
     if (!solve(x, ends, false)) return false;
     out = data_.links.get(&LinkBlock::omega_rate, joint) - data_.links.get(&LinkBlock::omega_rate, joint - 1);
     return true;
@@ -82,7 +84,8 @@ bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndI
   }
   const Eigen::Vector3d held = ok ? Eigen::Vector3d(response.fullPivLu().solve(-free)) : Eigen::Vector3d::Zero();
   ok = ok && held.allFinite();
-  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ends.time);  // a failed probe holds nothing
+  if (std::getenv("HOLD_DEBUG")) std::fprintf(stderr, "t %.3f joint %d free %g %g %g held %g %g %g response diag %g %g %g\n", ends.time, joint, free.x(), free.y(), free.z(), held.x(), held.y(), held.z(), response(0,0), response(1,1), response(2,2));
+  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ends.time, ends.winch_deployed, span);  // a failed probe holds nothing
   return ok;
 }
 
@@ -95,7 +98,7 @@ void ChainDynamics::computeBodyTerms(const Eigen::VectorXd& x, const EndInputs& 
 
 void ChainDynamics::applyEnds(const EndInputs& ends) {
   if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
-  if (model_.jointHolds() > 0) model_.setHoldTime(ends.time);
+  if (model_.jointHolds() > 0) model_.setHoldState(ends.time, ends.winch_deployed);
   const LinkProperties& p = model_.properties();
   data_.clamp_axis = ends.clamp_moves ? ends.clamp_axis : p.clamp_axis;
   data_.clamp_twist = ends.clamp_moves ? ends.clamp_twist : p.clamp_twist;

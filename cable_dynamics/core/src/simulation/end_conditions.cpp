@@ -108,6 +108,7 @@ EndInputs EndConditions::at(double t) const {
     const WinchMotion m = winch_.at(t);
     ends.winch = true;
     ends.winch_length = m.length - outboard_length_;
+    ends.winch_deployed = m.length;
     ends.winch_speed = m.speed;
     ends.winch_acceleration = m.acceleration;
   }

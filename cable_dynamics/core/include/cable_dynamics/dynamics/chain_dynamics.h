@@ -55,12 +55,17 @@ class ChainDynamics {
   /// Holds joint `joint` (between links joint - 1 and joint, straight and turning together, as just
   /// after the winch's link split there) with the moment that keeps their relative angular
   /// acceleration zero at x: the moment the rigid link held there, so that the accelerations, and the
-  /// line pull, are those the unsplit link had; it then falls to zero over kJointHoldRelease
-  /// (ChainModel::holdJoint). Four solves; between steps. Returns false (no hold) when a solve fails.
-  bool holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends);
-  /// Drops the holds whose release has ended by time t [s]; between steps.
-  void dropReleasedHolds(double t) { model_.dropReleasedHolds(t); }
-  /// Drops every hold (a new state).
+  /// line pull, are those the unsplit link had; it is let go as the winch pays out the next
+  /// kJointHoldLinks links of `span` [m] (ChainModel::holdJoint, JointHold). Four solves; between steps.
+  /// Returns false (a zero hold) when a solve fails.
+  bool holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends, double span);
+  /// Drops the holds the ends `ends` let go entirely; between steps.
+  void dropReleasedHolds(const EndInputs& ends) {
+    if (model_.jointHolds() == 0) return;
+    model_.setHoldState(ends.time, ends.winch_deployed);
+    model_.dropReleasedHolds();
+  }
+  /// Drops any hold (a new state).
   void releaseJoints() { model_.releaseJoints(); }
   /// Replaces the constants by `model` (the same cable: same n; live tuning of its coefficients). The
   /// workspace keeps its sizes; between evaluations only.

@@ -31,28 +31,34 @@ struct LoadConstants {
   LoadCoupling coupling() const { return {coupling_stiffness, coupling_damping}; }
 };
 
-/// A joint the winch has just made (docs/MODEL.md section 8, "Line pull through a link added"): when the
-/// winch's link splits, the new joint between its two parts starts with the moment the rigid link held
-/// there (`initial`, a torque on link `joint` from link `joint - 1`, world axes [N m]), which then falls
-/// to zero over kJointHoldRelease seconds from `start` [s]: the joint is released gradually instead of at
-/// once. An internal pair of torques (momentum is unchanged); its power is booked with the losses.
+/// A joint the winch has just made (docs/MODEL.md section 8, "A link added"): when the winch's link
+/// splits, the new joint between its two parts starts with the moment the rigid link held there
+/// (`initial`, a torque on link `joint` from link `joint - 1`, world axes [N m]) and lets it go as the
+/// winch pays out the next kJointHoldLinks links: after a paid-out length d = s `span` (`span` the length
+/// of the link split off, the distance to the next split) it holds jointHoldLeft(s) of it. Or in
+/// kJointHoldLongest seconds from `start` [s], whichever is sooner. An internal pair of torques (the
+/// momentum does not change); its power is booked with the losses.
 struct JointHold {
   int joint = -1;
   Eigen::Vector3d initial = Eigen::Vector3d::Zero();
-  double start = 0.0;
-  Eigen::Vector3d now = Eigen::Vector3d::Zero();  ///< at the time of the last ChainModel::setHoldTime
+  double start = 0.0, deployed = 0.0, span = 1.0;  ///< [s], the deployed length at the split [m], [m]
+  double fraction = 1.0;                           ///< held now (at the last ChainModel::setHoldState)
+  Eigen::Vector3d now = Eigen::Vector3d::Zero();   ///< fraction * initial
 };
 
-/// How long a new joint's held moment takes to fall to zero [s]: several periods of the swing a sudden
-/// release starts (0.4 s in rov_dive.yaml), so the release excites it little.
-constexpr double kJointHoldRelease = 2.0;
-/// The fraction of the held moment left a fraction s of the release in: 1 - (10 s^3 - 15 s^4 + 6 s^5),
-/// from 1 to 0 with zero first and second derivatives at both ends.
+/// The links paid out while a new joint lets its moment go; each of the joints then lets go at the rate
+/// of a hat of width kJointHoldLinks links, and the hats of successive joints sum to one: at a steady
+/// pay-out the moment let go per metre does not jump where a link is added.
+constexpr int kJointHoldLinks = 2;
+/// The fraction held after s links paid out: 1 - the integral of the hat, 1 - s^2/2 on [0, 1],
+/// (2 - s)^2/2 on [1, 2], 0 after (its rate is continuous: a smooth start and end).
 inline double jointHoldLeft(double s) {
   if (s <= 0.0) return 1.0;
-  if (s >= 1.0) return 0.0;
-  return 1.0 - s * s * s * (10.0 + s * (-15.0 + 6.0 * s));
+  if (s >= 2.0) return 0.0;
+  return s < 1.0 ? 1.0 - 0.5 * s * s : 0.5 * (2.0 - s) * (2.0 - s);
 }
+/// The longest a new joint's hold lasts [s]: a winch that stops or pays out slowly lets it go in this time.
+constexpr double kJointHoldLongest = 10.0;
 
 /// Everything about one cable that does not change during a run. Each constant is computed here, once,
 /// and every pass of the dynamics reads it from here: per link in `lanes` (eight links a block, the
@@ -87,13 +93,16 @@ class ChainModel {
   /// it. O(1); the winch calls it for each evaluation.
   void setWinchLinkLength(double length);
   /// The joints the winch has just made and the moments they hold (JointHold); at most kMaxJointHolds,
-  /// the oldest dropped first. holdJoint replaces the hold of a joint already held.
-  static constexpr int kMaxJointHolds = 4;
-  void holdJoint(int joint, const Eigen::Vector3d& torque, double start);
-  /// Each hold's moment at time t [s] (JointHold::now). O(holds); every evaluation calls it.
-  void setHoldTime(double t);
-  /// Drops the holds whose release has ended by time t [s].
-  void dropReleasedHolds(double t);
+  /// the oldest dropped first. holdJoint holds `joint` with `torque` [N m] from time `start` [s] and the
+  /// deployed length `deployed` [m], let go over kJointHoldLinks times `span` [m] of pay-out; it
+  /// replaces a hold of the same joint.
+  static constexpr int kMaxJointHolds = kJointHoldLinks + 1;
+  void holdJoint(int joint, const Eigen::Vector3d& torque, double start, double deployed, double span);
+  /// Each hold's fraction and moment at time t [s] and deployed length `deployed` [m]
+  /// (JointHold::fraction, now). O(holds); every evaluation calls it.
+  void setHoldState(double t, double deployed);
+  /// Drops the holds let go entirely (fraction 0 at the last setHoldState).
+  void dropReleasedHolds();
   void releaseJoints() { hold_count_ = 0; }
   int jointHolds() const { return hold_count_; }
   const JointHold& jointHold(int i) const { return holds_[i]; }
@@ -154,10 +163,9 @@ class ChainModel {
   std::vector<int> attachment_begin_;
   bool attachment_drag_ = false;
   std::vector<LinkConstants> lanes_;  // C++17's allocator honours the 64-byte alignment
-  std::array<JointHold, kMaxJointHolds> holds_{};
+  std::array<JointHold, kMaxJointHolds> holds_{};  ///< the winch's joints made last, while held
   int hold_count_ = 0;
-  /// Drops hold i, keeping the others in order.
-  void dropHold(int i);
+  void dropHold(int i);  ///< keeps the others in order
 };
 
 }  // namespace cable_dynamics

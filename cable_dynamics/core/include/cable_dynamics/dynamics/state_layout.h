@@ -51,6 +51,7 @@ struct EndInputs {
   /// winch_length and grows at winch_speed, its material sliding out along its axis at that speed.
   bool winch = false;
   double winch_length = 0.0;        ///< [m]
+  double winch_deployed = 0.0;      ///< the deployed length L [m]
   double winch_speed = 0.0;         ///< + paying out [m/s]
   double winch_acceleration = 0.0;  ///< [m/s^2]
   /// The ROV body's thrust (load.mode body): force and moment at its origin, body frame [N, N m].
