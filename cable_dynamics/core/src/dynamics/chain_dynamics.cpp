@@ -1,5 +1,3 @@
-#include <cstdio>
-#include <cstdlib>
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 
 #include <cassert>
@@ -70,7 +68,7 @@ bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndI
   // The relative angular acceleration of the two links is affine in the held moment: its value at
   // zero and its change per unit moment about each axis give the moment that makes it zero.
   const auto relative = [&](const Eigen::Vector3d& torque, Eigen::Vector3d& out) {
-    model_.holdJoint(joint, torque, ends.time, ends.winch_deployed, span);
+    model_.holdJoint(joint, torque, Eigen::Matrix3d::Zero(), ends.time, ends.winch_deployed, span);
     if (!solve(x, ends, false)) return false;
     out = data_.links.get(&LinkBlock::omega_rate, joint) - data_.links.get(&LinkBlock::omega_rate, joint - 1);
     return true;
@@ -84,8 +82,12 @@ bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndI
   }
   const Eigen::Vector3d held = ok ? Eigen::Vector3d(response.fullPivLu().solve(-free)) : Eigen::Vector3d::Zero();
   ok = ok && held.allFinite();
-  if (std::getenv("HOLD_DEBUG")) std::fprintf(stderr, "t %.3f joint %d free %g %g %g held %g %g %g response diag %g %g %g\n", ends.time, joint, free.x(), free.y(), free.z(), held.x(), held.y(), held.z(), response(0,0), response(1,1), response(2,2));
-  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ends.time, ends.winch_deployed, span);  // a failed probe holds nothing
+  // The joint's relative inertia is the inverse of its response (symmetric up to round-off).
+  Eigen::Matrix3d inertia = ok ? Eigen::Matrix3d(response.inverse()) : Eigen::Matrix3d::Zero();
+  inertia = 0.5 * (inertia + inertia.transpose());
+  ok = ok && inertia.allFinite();
+  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ok ? Eigen::Matrix3d(kJointHoldDampingRate * inertia) : Eigen::Matrix3d::Zero(),
+                   ends.time, ends.winch_deployed, span);  // a failed probe holds nothing
   return ok;
 }
 

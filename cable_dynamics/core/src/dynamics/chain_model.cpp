@@ -136,14 +136,15 @@ void ChainModel::dropHold(int i) {
   --hold_count_;
 }
 
-void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, double start, double deployed, double span) {
+void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, const Eigen::Matrix3d& damping, double start,
+                           double deployed, double span) {
   int i = 0;
   while (i < hold_count_ && holds_[i].joint != joint) ++i;
   if (i == hold_count_) {
     if (hold_count_ == kMaxJointHolds) dropHold(0);
     i = hold_count_++;
   }
-  holds_[i] = JointHold{joint, torque, start, deployed, span, 1.0, torque};
+  holds_[i] = JointHold{joint, torque, start, deployed, span, damping, 1.0, torque};
 }
 
 void ChainModel::setHoldState(double t, double deployed) {

@@ -92,17 +92,20 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
   }
 }
 
-}  // namespace
-
-namespace {
+/// A held joint's moment and damper on link `joint` [N m].
+Eigen::Vector3d holdTorque(const JointHold& h, const ChainData& data) {
+  const Eigen::Vector3d relative = data.links.get(&LinkBlock::omega, h.joint) - data.links.get(&LinkBlock::omega, h.joint - 1);
+  return h.now - h.fraction * (h.damping * relative);
+}
 
 /// The winch's held joints' moments (ChainModel::jointHold) onto the links' torques: +now on link
 /// `joint`, -now on link `joint - 1`.
 void addJointHolds(const ChainModel& model, ChainData& data) {
   for (int i = 0; i < model.jointHolds(); ++i) {
     const JointHold& h = model.jointHold(i);
-    data.links.set(&LinkBlock::torque, h.joint, data.links.get(&LinkBlock::torque, h.joint) + h.now);
-    data.links.set(&LinkBlock::torque, h.joint - 1, data.links.get(&LinkBlock::torque, h.joint - 1) - h.now);
+    const Eigen::Vector3d torque = holdTorque(h, data);
+    data.links.set(&LinkBlock::torque, h.joint, data.links.get(&LinkBlock::torque, h.joint) + torque);
+    data.links.set(&LinkBlock::torque, h.joint - 1, data.links.get(&LinkBlock::torque, h.joint - 1) - torque);
   }
 }
 
@@ -141,7 +144,7 @@ double jointHoldPower(const ChainModel& model, const ChainData& data) {
   double power = 0.0;
   for (int i = 0; i < model.jointHolds(); ++i) {
     const JointHold& h = model.jointHold(i);
-    power += h.now.dot(data.links.get(&LinkBlock::omega, h.joint) - data.links.get(&LinkBlock::omega, h.joint - 1));
+    power += holdTorque(h, data).dot(data.links.get(&LinkBlock::omega, h.joint) - data.links.get(&LinkBlock::omega, h.joint - 1));
   }
   return power;
 }

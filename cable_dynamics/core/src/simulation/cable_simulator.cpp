@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -193,7 +192,7 @@ void CableSimulator::finishWinchStep() {
   ends_.setOutboardLength(outboard);
   // A link added: the new joint starts with the moment the rigid link held there and lets it go as the
   // next link is paid out (docs/MODEL.md section 8), so the line pull goes on from where it was.
-  if (change == WinchRegrid::kAdded && !std::getenv("HOLD_OFF")) {
+  if (change == WinchRegrid::kAdded) {
     const int joint = firstLink() + 1;
     dynamics_.holdNewJoint(joint, x_, ends_.at(time_), dynamics_.model().properties().length(joint));
   }
