@@ -64,7 +64,8 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   return true;
 }
 
-bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends, double span) {
+bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends, double span,
+                                 double damping_rate) {
   // The relative angular acceleration of the two links is affine in the held moment: its value at
   // zero and its change per unit moment about each axis give the moment that makes it zero.
   const auto relative = [&](const Eigen::Vector3d& torque, Eigen::Vector3d& out) {
@@ -86,7 +87,7 @@ bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndI
   Eigen::Matrix3d inertia = ok ? Eigen::Matrix3d(response.inverse()) : Eigen::Matrix3d::Zero();
   inertia = 0.5 * (inertia + inertia.transpose());
   ok = ok && inertia.allFinite();
-  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ok ? Eigen::Matrix3d(kJointHoldDampingRate * inertia) : Eigen::Matrix3d::Zero(),
+  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ok ? Eigen::Matrix3d(damping_rate * inertia) : Eigen::Matrix3d::Zero(),
                    ends.time, ends.winch_deployed, span);  // a failed probe holds nothing
   return ok;
 }

@@ -194,7 +194,8 @@ void CableSimulator::finishWinchStep() {
   // next link is paid out (docs/MODEL.md section 8), so the line pull goes on from where it was.
   if (change == WinchRegrid::kAdded) {
     const int joint = firstLink() + 1;
-    dynamics_.holdNewJoint(joint, x_, ends_.at(time_), dynamics_.model().properties().length(joint));
+    dynamics_.holdNewJoint(joint, x_, ends_.at(time_), dynamics_.model().properties().length(joint),
+                           std::min(kJointHoldDampingRate, kJointHoldDampingStep / dt_));
   }
   // What the change took out of the mechanical energy (nothing when a link is added; the kink's
   // energy when two merge) counts as dissipated, so that the balance stays closed.

@@ -52,10 +52,11 @@ struct JointHold {
 /// The held joint's damper over its relative inertia [1/s]. The moment the rigid link held changes as
 /// the joint moves out from the winch (near a clamp, quickly), and a fixed held moment misses that
 /// change: the damper keeps what it misses from swinging the joint, and lets go with the held moment.
-/// 200/s: rov_dive.yaml's line pull 0.56 % rms (1.40 % peak) about its 2 s mean without it, 0.44 % (0.80 %)
-/// at 60/s, 0.32 % (0.58 %) at 200/s; a stiff tether's 0.04 % either way. Far from any step limit
-/// (RK4's real-axis bound is 2.8/dt).
+/// rov_dive.yaml's line pull about its 2 s mean: 0.56 % rms (1.40 % peak) without it, 0.44 % (0.80 %)
+/// at 60/s, 0.32 % (0.58 %) at 200/s; a stiff tether's 0.04 % either way. No integrator's linearization
+/// holds it: at most kJointHoldDampingStep / dt (the implicit integrator at 10 ms: 50/s).
 constexpr double kJointHoldDampingRate = 200.0;
+constexpr double kJointHoldDampingStep = 0.5;
 
 /// The links paid out while a new joint lets its moment go; each of the joints then lets go at the rate
 /// of a hat of width kJointHoldLinks links, and the hats of successive joints sum to one: at a steady
