@@ -3,6 +3,8 @@
 #include <cassert>
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 #include "cable_dynamics/dynamics/articulated_body.h"
 #include "cable_dynamics/dynamics/dense_solver.h"
 #include "cable_dynamics/dynamics/energies.h"
@@ -66,29 +68,35 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
 
 bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends, double span,
                                  double damping_rate) {
-  // The relative angular acceleration of the two links is affine in the held moment: its value at
-  // zero and its change per unit moment about each axis give the moment that makes it zero.
-  const auto relative = [&](const Eigen::Vector3d& torque, Eigen::Vector3d& out) {
-    model_.holdJoint(joint, torque, Eigen::Matrix3d::Zero(), ends.time, ends.winch_deployed, span);
+  // The held moment acts across the links' axis u (they are straight at the split; a spin passes no
+  // moment through a joint). The relative angular acceleration across u is affine in it: its value at
+  // zero and its change per unit moment about two axes e1, e2 across u give the moment that makes it zero.
+  const Eigen::Vector3d axis = data_.links.get(&LinkBlock::u, joint).normalized();
+  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  const auto relative = [&](const Eigen::Vector3d& torque, Eigen::Vector2d& out) {
+    model_.holdJoint(joint, torque, 0.0, ends.time, ends.winch_deployed, span);
     if (!solve(x, ends, false)) return false;
-    out = data_.links.get(&LinkBlock::omega_rate, joint) - data_.links.get(&LinkBlock::omega_rate, joint - 1);
+    const Eigen::Vector3d a =
+        data_.links.get(&LinkBlock::omega_rate, joint) - data_.links.get(&LinkBlock::omega_rate, joint - 1);
+    out << e1.dot(a), e2.dot(a);
     return true;
   };
-  Eigen::Vector3d free, unit;
-  Eigen::Matrix3d response;
-  bool ok = relative(Eigen::Vector3d::Zero(), free);
-  for (int axis = 0; axis < 3 && ok; ++axis) {
-    ok = relative(Eigen::Vector3d::Unit(axis), unit);
-    response.col(axis) = unit - free;
-  }
-  const Eigen::Vector3d held = ok ? Eigen::Vector3d(response.fullPivLu().solve(-free)) : Eigen::Vector3d::Zero();
-  ok = ok && held.allFinite();
-  // The joint's relative inertia is the inverse of its response (symmetric up to round-off).
-  Eigen::Matrix3d inertia = ok ? Eigen::Matrix3d(response.inverse()) : Eigen::Matrix3d::Zero();
-  inertia = 0.5 * (inertia + inertia.transpose());
-  ok = ok && inertia.allFinite();
-  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ok ? Eigen::Matrix3d(damping_rate * inertia) : Eigen::Matrix3d::Zero(),
-                   ends.time, ends.winch_deployed, span);  // a failed probe holds nothing
+  Eigen::Vector2d free, unit;
+  Eigen::Matrix2d response;
+  bool ok = relative(Eigen::Vector3d::Zero(), free) && relative(e1, unit);
+  response.col(0) = unit - free;
+  ok = ok && relative(e2, unit);
+  response.col(1) = unit - free;
+  const Eigen::Vector2d moment = ok ? Eigen::Vector2d(response.fullPivLu().solve(-free)) : Eigen::Vector2d::Zero();
+  const Eigen::Vector3d held = moment(0) * e1 + moment(1) * e2;
+  // The joint's relative inertia across u is the inverse of its response (symmetric up to round-off);
+  // the damper takes the smaller of its two values.
+  const Eigen::Matrix2d inverse = ok ? Eigen::Matrix2d(response.inverse()) : Eigen::Matrix2d::Zero();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(0.5 * (inverse + inverse.transpose()), Eigen::EigenvaluesOnly);
+  const double across = eigen.eigenvalues()(0);
+  ok = ok && held.allFinite() && std::isfinite(across) && across > 0.0;
+  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ok ? damping_rate * across : 0.0, ends.time,
+                   ends.winch_deployed, span);  // a failed probe holds nothing
   return ok;
 }
 

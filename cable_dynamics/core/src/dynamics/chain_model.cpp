@@ -136,8 +136,8 @@ void ChainModel::dropHold(int i) {
   --hold_count_;
 }
 
-void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, const Eigen::Matrix3d& damping, double start,
-                           double deployed, double span) {
+void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, double damping, double start, double deployed,
+                           double span) {
   int i = 0;
   while (i < hold_count_ && holds_[i].joint != joint) ++i;
   if (i == hold_count_) {

@@ -92,10 +92,17 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
   }
 }
 
-/// A held joint's moment and damper on link `joint` [N m].
+/// A held joint's moment and damper on link `joint` [N m], across the two links' mean axis. The damper
+/// reads the links' turning rates across their own axes (u x u'), not their spins: a spin's inertia is
+/// tiny, and a damper that read it would be a stiff loop.
 Eigen::Vector3d holdTorque(const JointHold& h, const ChainData& data) {
-  const Eigen::Vector3d relative = data.links.get(&LinkBlock::omega, h.joint) - data.links.get(&LinkBlock::omega, h.joint - 1);
-  return h.now - h.fraction * (h.damping * relative);
+  const LinkBlocks& links = data.links;
+  const Eigen::Vector3d inboard = links.get(&LinkBlock::u, h.joint - 1), outboard = links.get(&LinkBlock::u, h.joint);
+  const Eigen::Vector3d direction = (inboard + outboard).normalized();
+  const Eigen::Vector3d turning = outboard.cross(links.get(&LinkBlock::axis_rate, h.joint)) -
+                                  inboard.cross(links.get(&LinkBlock::axis_rate, h.joint - 1));
+  const Eigen::Vector3d torque = h.now - (h.fraction * h.damping) * turning;
+  return torque - torque.dot(direction) * direction;
 }
 
 /// The winch's held joints' moments (ChainModel::jointHold) onto the links' torques: +now on link

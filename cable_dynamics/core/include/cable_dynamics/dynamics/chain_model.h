@@ -33,7 +33,8 @@ struct LoadConstants {
 
 /// A joint the winch has just made (docs/MODEL.md section 8, "A link added"): when the winch's link
 /// splits, the new joint between its two parts starts with the moment the rigid link held there
-/// (`initial`, a torque on link `joint` from link `joint - 1`, world axes [N m]) and lets it go as the
+/// (`initial`, a torque on link `joint` from link `joint - 1`, world axes [N m]; it acts across the
+/// two links' mean axis, its part along it dropped as they turn) and lets it go as the
 /// winch pays out the next kJointHoldLinks links: after a paid-out length d = s `span` (`span` the length
 /// of the link split off, the distance to the next split) it holds jointHoldLeft(s) of it. Or in
 /// kJointHoldLongest seconds from `start` [s], whichever is sooner. An internal pair of torques (the
@@ -42,9 +43,10 @@ struct JointHold {
   int joint = -1;
   Eigen::Vector3d initial = Eigen::Vector3d::Zero();
   double start = 0.0, deployed = 0.0, span = 1.0;  ///< [s], the deployed length at the split [m], [m]
-  /// A damper on the joint's relative angular velocity that lets go with the moment [N m s]
-  /// (kJointHoldDampingRate times the joint's relative inertia, world axes).
-  Eigen::Matrix3d damping = Eigen::Matrix3d::Zero();
+  /// A damper on the joint's relative turning rate (the links' u x u'), across the two links' mean axis,
+  /// let go with the moment [N m s]: a damping rate times the joint's relative inertia across the axis
+  /// (the smaller of its two values).
+  double damping = 0.0;
   double fraction = 1.0;                           ///< held now (at the last ChainModel::setHoldState)
   Eigen::Vector3d now = Eigen::Vector3d::Zero();   ///< fraction * initial
 };
@@ -109,8 +111,8 @@ class ChainModel {
   /// deployed length `deployed` [m], let go over kJointHoldLinks times `span` [m] of pay-out; it
   /// replaces a hold of the same joint.
   static constexpr int kMaxJointHolds = kJointHoldLinks + 1;
-  void holdJoint(int joint, const Eigen::Vector3d& torque, const Eigen::Matrix3d& damping, double start,
-                 double deployed, double span);
+  void holdJoint(int joint, const Eigen::Vector3d& torque, double damping, double start, double deployed,
+                 double span);
   /// Each hold's fraction and moment at time t [s] and deployed length `deployed` [m]
   /// (JointHold::fraction, now). O(holds); every evaluation calls it.
   void setHoldState(double t, double deployed);
