@@ -3,6 +3,8 @@
 #include <cassert>
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 #include "cable_dynamics/dynamics/articulated_body.h"
 #include "cable_dynamics/dynamics/dense_solver.h"
 #include "cable_dynamics/dynamics/energies.h"
@@ -66,6 +68,40 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   return true;
 }
 
+bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends, double span,
+                                 double damping_rate) {
+  // The held moment acts across the links' axis u (they are straight at the split; a spin passes no
+  // moment through a joint). The relative angular acceleration across u is affine in it: its value at
+  // zero and its change per unit moment about two axes e1, e2 across u give the moment that makes it zero.
+  const Eigen::Vector3d axis = data_.links.get(&LinkBlock::u, joint).normalized();
+  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  const auto relative = [&](const Eigen::Vector3d& torque, Eigen::Vector2d& out) {
+    model_.holdJoint(joint, torque, 0.0, ends.time, ends.winch_deployed, span);
+    if (!solve(x, ends, false)) return false;
+    const Eigen::Vector3d a =
+        data_.links.get(&LinkBlock::omega_rate, joint) - data_.links.get(&LinkBlock::omega_rate, joint - 1);
+    out << e1.dot(a), e2.dot(a);
+    return true;
+  };
+  Eigen::Vector2d free, unit;
+  Eigen::Matrix2d response;
+  bool ok = relative(Eigen::Vector3d::Zero(), free) && relative(e1, unit);
+  response.col(0) = unit - free;
+  ok = ok && relative(e2, unit);
+  response.col(1) = unit - free;
+  const Eigen::Vector2d moment = ok ? Eigen::Vector2d(response.fullPivLu().solve(-free)) : Eigen::Vector2d::Zero();
+  const Eigen::Vector3d held = moment(0) * e1 + moment(1) * e2;
+  // The joint's relative inertia across u is the inverse of its response (symmetric up to round-off);
+  // the damper takes the smaller of its two values.
+  const Eigen::Matrix2d inverse = ok ? Eigen::Matrix2d(response.inverse()) : Eigen::Matrix2d::Zero();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(0.5 * (inverse + inverse.transpose()), Eigen::EigenvaluesOnly);
+  const double across = eigen.eigenvalues()(0);
+  ok = ok && held.allFinite() && std::isfinite(across) && across > 0.0;
+  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ok ? damping_rate * across : 0.0, ends.time,
+                   ends.winch_deployed, span);  // a failed probe holds nothing
+  return ok;
+}
+
 void ChainDynamics::computeBodyTerms(const Eigen::VectorXd& x, const EndInputs& ends) {
   if (!model_.body().active) return;
   const int n = links();
@@ -75,6 +111,7 @@ void ChainDynamics::computeBodyTerms(const Eigen::VectorXd& x, const EndInputs& 
 
 void ChainDynamics::applyEnds(const EndInputs& ends) {
   if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
+  if (model_.jointHolds() > 0) model_.setHoldState(ends.time, ends.winch_deployed);
   const LinkProperties& p = model_.properties();
   data_.clamp_axis = ends.clamp_moves ? ends.clamp_axis : p.clamp_axis;
   data_.clamp_twist = ends.clamp_moves ? ends.clamp_twist : p.clamp_twist;

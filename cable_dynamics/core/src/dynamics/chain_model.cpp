@@ -1,5 +1,6 @@
 #include "cable_dynamics/dynamics/chain_model.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -58,6 +59,8 @@ ChainModel::ChainModel(const CableParams& params, const ChainModel& like) : Chai
   }
   if (like.firstLink() != first_) deploy(like.firstLink());
   if (has_winch_) setWinchLinkLength(like.properties().length(first_));
+  holds_ = like.holds_;
+  hold_count_ = like.hold_count_;
 }
 
 void ChainModel::setLinkLength(int k, double l) {
@@ -112,6 +115,10 @@ void ChainModel::setLinkLength(int k, double l) {
 
 void ChainModel::deploy(int first) {
   first_ = first;
+  // A held joint at or before the base link is no longer between two deployed links.
+  for (int i = hold_count_ - 1; i >= 0; --i) {
+    if (holds_[i].joint <= first) dropHold(i);
+  }
   for (int k = 0; k < n_; ++k) setLinkLength(k, k < first ? 0.0 : nominal_.length(k));
   // The base's joint (the clamp's springs and dampers, or none for a pin) moves with the base link;
   // the drum's slots have no joints. Every drum slot has the base link's length, so slot 0's configured
@@ -128,6 +135,38 @@ void ChainModel::deploy(int first) {
 
 void ChainModel::setWinchLinkLength(double length) {
   if (length != properties_.length(first_)) setLinkLength(first_, length);
+}
+
+void ChainModel::dropHold(int i) {
+  for (int j = i; j + 1 < hold_count_; ++j) holds_[j] = holds_[j + 1];
+  --hold_count_;
+}
+
+void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, double damping, double start, double deployed,
+                           double span) {
+  int i = 0;
+  while (i < hold_count_ && holds_[i].joint != joint) ++i;
+  if (i == hold_count_) {
+    if (hold_count_ == kMaxJointHolds) dropHold(0);
+    i = hold_count_++;
+  }
+  holds_[i] = JointHold{joint, torque, start, deployed, span, damping, 1.0, torque};
+}
+
+void ChainModel::setHoldState(double t, double deployed) {
+  for (int i = 0; i < hold_count_; ++i) {
+    JointHold& h = holds_[i];
+    const double paid = (deployed - h.deployed) / h.span;
+    const double waited = kJointHoldLinks * (t - h.start) / kJointHoldLongest;
+    h.fraction = jointHoldLeft(std::max(paid, waited));
+    h.now = h.fraction * h.initial;
+  }
+}
+
+void ChainModel::dropReleasedHolds() {
+  for (int i = hold_count_ - 1; i >= 0; --i) {
+    if (holds_[i].fraction <= 0.0) dropHold(i);
+  }
 }
 
 }  // namespace cable_dynamics

@@ -92,11 +92,45 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
   }
 }
 
+/// A held joint's moment and damper on link `joint` [N m], across the two links' mean axis. The damper
+/// reads the links' turning rates across their own axes (u x u'), not their spins: a spin's inertia is
+/// tiny, and a damper that read it would be a stiff loop.
+Eigen::Vector3d holdTorque(const JointHold& h, const ChainData& data) {
+  const LinkBlocks& links = data.links;
+  const Eigen::Vector3d inboard = links.get(&LinkBlock::u, h.joint - 1), outboard = links.get(&LinkBlock::u, h.joint);
+  const Eigen::Vector3d direction = (inboard + outboard).normalized();
+  const Eigen::Vector3d turning = outboard.cross(links.get(&LinkBlock::axis_rate, h.joint)) -
+                                  inboard.cross(links.get(&LinkBlock::axis_rate, h.joint - 1));
+  const Eigen::Vector3d torque = h.now - (h.fraction * h.damping) * turning;
+  return torque - torque.dot(direction) * direction;
+}
+
+/// The winch's held joints' moments (ChainModel::jointHold) onto the links' torques: +now on link
+/// `joint`, -now on link `joint - 1`.
+void addJointHolds(const ChainModel& model, ChainData& data) {
+  for (int i = 0; i < model.jointHolds(); ++i) {
+    const JointHold& h = model.jointHold(i);
+    const Eigen::Vector3d torque = holdTorque(h, data);
+    data.links.set(&LinkBlock::torque, h.joint, data.links.get(&LinkBlock::torque, h.joint) + torque);
+    data.links.set(&LinkBlock::torque, h.joint - 1, data.links.get(&LinkBlock::torque, h.joint - 1) - torque);
+  }
+}
+
 }  // namespace
 
 void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, bool with_dampers) {
   const bool paper = model.stiffnessModel() == StiffnessModel::kPaper;
-  if (paper && !model.hasSprings()) return;  // all zero since construction (the presets)
+  if (paper && !model.hasSprings()) {
+    // Every torque is zero since construction (the presets), but for a winch's held joints: they write
+    // their moments afresh each evaluation, and the first evaluation without any clears them.
+    if (model.jointHolds() == 0 && !data.holds_written) return;
+    for (int k = model.firstBlock() * kBlockLanes; k < model.links(); ++k) {
+      data.links.set(&LinkBlock::torque, k, Eigen::Vector3d::Zero());
+    }
+    addJointHolds(model, data);
+    data.holds_written = model.jointHolds() > 0;
+    return;
+  }
   data.clamp_torque.setZero();
   data.tip_clamp_torque.setZero();
   data.spring_torque.setZero();
@@ -110,6 +144,16 @@ void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::
   for (int k = model.firstLink(); k < model.links(); ++k) {
     data.links.set(&LinkBlock::torque, k, data.spring_torque.col(k) + data.damping_torque.col(k));
   }
+  addJointHolds(model, data);
+}
+
+double jointHoldPower(const ChainModel& model, const ChainData& data) {
+  double power = 0.0;
+  for (int i = 0; i < model.jointHolds(); ++i) {
+    const JointHold& h = model.jointHold(i);
+    power += holdTorque(h, data).dot(data.links.get(&LinkBlock::omega, h.joint) - data.links.get(&LinkBlock::omega, h.joint - 1));
+  }
+  return power;
 }
 
 double damperPower(const ChainModel& model, const ChainData& data) {

@@ -138,6 +138,7 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   // Azimuths continue from the solved axes (nearest branch to the old ones); a new start for the
   // energy bookkeeping, as after setPaperState().
   dynamics_.followAzimuths(x_);
+  dynamics_.releaseJoints();  // the equilibrium holds no joint
   start_balance_known_ = false;
   drift_reference_known_ = false;
   largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
@@ -195,6 +196,13 @@ void CableSimulator::finishWinchStep() {
   if (change == WinchRegrid::kNone) return;
   (change == WinchRegrid::kAdded ? links_added_ : links_removed_) += 1;
   ends_.setOutboardLength(outboard);
+  // A link added: the new joint starts with the moment the rigid link held there and lets it go as the
+  // next link is paid out (docs/MODEL.md section 8), so the line pull goes on from where it was.
+  if (change == WinchRegrid::kAdded) {
+    const int joint = firstLink() + 1;
+    dynamics_.holdNewJoint(joint, x_, ends_.at(time_), dynamics_.model().properties().length(joint),
+                           std::min(kJointHoldDampingRate, kJointHoldDampingStep / dt_));
+  }
   // What the change took out of the mechanical energy (nothing when a link is added; the kink's
   // energy when two merge) counts as dissipated, so that the balance stays closed.
   const double energy_after = dynamics_.mechanicalEnergy(x_, ends_.at(time_), magnitude);
@@ -250,6 +258,7 @@ void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::Vector
   }
   if (!q.allFinite() || !qd.allFinite()) throw std::invalid_argument("state has a non-finite value");
   dynamics_.stateFromPaper(q, qd, x_);
+  dynamics_.releaseJoints();  // a new state: no joint is held
   start_balance_known_ = false;
   drift_reference_known_ = false;
   largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
@@ -341,7 +350,10 @@ StepReport CableSimulator::step() {
       if (pieces > 1) ++retried_steps_;
       time_ = t0 + dt_;  // no drift from summing the pieces
       dynamics_.followAzimuths(x_);
-      if (hasWinch()) finishWinchStep();
+      if (hasWinch()) {
+        dynamics_.dropReleasedHolds(ends_.at(time_));
+        finishWinchStep();
+      }
       watchStretches(true);
       return report;
     }

@@ -61,6 +61,7 @@ void EndConditions::reset() {
 
 EndInputs EndConditions::at(double t) const {
   EndInputs ends;
+  ends.time = t;
   if (external_base_) {
     ends.base_position = base_position_;
     ends.base_velocity = base_velocity_;
@@ -107,6 +108,7 @@ EndInputs EndConditions::at(double t) const {
     const WinchMotion m = winch_.at(t);
     ends.winch = true;
     ends.winch_length = m.length - outboard_length_;
+    ends.winch_deployed = m.length;
     ends.winch_speed = m.speed;
     ends.winch_acceleration = m.acceleration;
   }

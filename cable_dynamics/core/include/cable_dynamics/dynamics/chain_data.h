@@ -69,6 +69,9 @@ struct ChainData {
   Eigen::Vector3d tip_clamp_axis = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d tip_clamp_omega = Eigen::Vector3d::Zero();  ///< [rad/s]
   Eigen::Vector3d tip_clamp_torque = Eigen::Vector3d::Zero();
+  /// computeJointTorques wrote a winch's held joints' moments into the links' torques in a model that has
+  /// no springs (the next evaluation without holds clears them).
+  bool holds_written = false;
 
   // Powers [W]: of the drag, of the added-mass force, of the moving base and the coupling.
   double drag_power = 0.0, added_mass_power = 0.0, input_power = 0.0;

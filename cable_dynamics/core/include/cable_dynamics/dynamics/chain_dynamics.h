@@ -57,6 +57,22 @@ class ChainDynamics {
   int links() const { return model_.links(); }
   /// The winch deploys slots [first, n) (ChainModel::deploy); between evaluations only.
   void deploy(int first) { model_.deploy(first); }
+  /// Holds joint `joint` (between links joint - 1 and joint, straight and turning together, as just
+  /// after the winch's link split there) with the moment across their axis that keeps their relative
+  /// angular acceleration across it zero at x: the moment the rigid link held there, so that the
+  /// accelerations, and the line pull, are those the unsplit link had; it is let go as the winch pays
+  /// out the next kJointHoldLinks links of `span` [m] (ChainModel::holdJoint, JointHold), with a damper
+  /// of `damping_rate` [1/s] times the joint's relative inertia across the axis. Three solves; between
+  /// steps. Returns false (a zero hold) when a solve fails.
+  bool holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends, double span, double damping_rate);
+  /// Drops the holds the ends `ends` let go entirely; between steps.
+  void dropReleasedHolds(const EndInputs& ends) {
+    if (model_.jointHolds() == 0) return;
+    model_.setHoldState(ends.time, ends.winch_deployed);
+    model_.dropReleasedHolds();
+  }
+  /// Drops any hold (a new state).
+  void releaseJoints() { model_.releaseJoints(); }
   /// Replaces the constants by `model` (the same cable: same n; live tuning of its coefficients). The
   /// workspace keeps its sizes; between evaluations only.
   void replaceModel(const ChainModel& model) { model_ = model; }

@@ -4,6 +4,7 @@
 ///        the "model" half of the model/data split (ChainData holds everything that changes). Live
 ///        tuning replaces the whole model between steps (CableSimulator::retune).
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,6 +30,49 @@ struct LoadConstants {
   /// The coupling's law (forces/coupling.h) with these gains.
   LoadCoupling coupling() const { return {coupling_stiffness, coupling_damping}; }
 };
+
+/// A joint the winch has just made (docs/MODEL.md section 8, "A link added"): when the winch's link
+/// splits, the new joint between its two parts starts with the moment the rigid link held there
+/// (`initial`, a torque on link `joint` from link `joint - 1`, world axes [N m]; it acts across the
+/// two links' mean axis, its part along it dropped as they turn) and lets it go as the
+/// winch pays out the next kJointHoldLinks links: after a paid-out length d = s `span` (`span` the length
+/// of the link split off, the distance to the next split) it holds jointHoldLeft(s) of it. Or in
+/// kJointHoldLongest seconds from `start` [s], whichever is sooner. An internal pair of torques (the
+/// momentum does not change); its power is booked with the losses.
+struct JointHold {
+  int joint = -1;
+  Eigen::Vector3d initial = Eigen::Vector3d::Zero();
+  double start = 0.0, deployed = 0.0, span = 1.0;  ///< [s], the deployed length at the split [m], [m]
+  /// A damper on the joint's relative turning rate (the links' u x u'), across the two links' mean axis,
+  /// let go with the moment [N m s]: a damping rate times the joint's relative inertia across the axis
+  /// (the smaller of its two values).
+  double damping = 0.0;
+  double fraction = 1.0;                           ///< held now (at the last ChainModel::setHoldState)
+  Eigen::Vector3d now = Eigen::Vector3d::Zero();   ///< fraction * initial
+};
+
+/// The held joint's damper over its relative inertia [1/s]. The moment the rigid link held changes as
+/// the joint moves out from the winch (near a clamp, quickly), and a fixed held moment misses that
+/// change: the damper keeps what it misses from swinging the joint, and lets go with the held moment.
+/// rov_dive.yaml's line pull about its 2 s mean: 0.56 % rms (1.40 % peak) without it, 0.44 % (0.80 %)
+/// at 60/s, 0.32 % (0.58 %) at 200/s; a stiff tether's 0.04 % either way. No integrator's linearization
+/// holds it: at most kJointHoldDampingStep / dt (the implicit integrator at 10 ms: 50/s).
+constexpr double kJointHoldDampingRate = 200.0;
+constexpr double kJointHoldDampingStep = 0.5;
+
+/// The links paid out while a new joint lets its moment go; each of the joints then lets go at the rate
+/// of a hat of width kJointHoldLinks links, and the hats of successive joints sum to one: at a steady
+/// pay-out the moment let go per metre does not jump where a link is added.
+constexpr int kJointHoldLinks = 2;
+/// The fraction held after s links paid out: 1 - the integral of the hat, 1 - s^2/2 on [0, 1],
+/// (2 - s)^2/2 on [1, 2], 0 after (its rate is continuous: a smooth start and end).
+inline double jointHoldLeft(double s) {
+  if (s <= 0.0) return 1.0;
+  if (s >= 2.0) return 0.0;
+  return s < 1.0 ? 1.0 - 0.5 * s * s : 0.5 * (2.0 - s) * (2.0 - s);
+}
+/// The longest a new joint's hold lasts [s]: a winch that stops or pays out slowly lets it go in this time.
+constexpr double kJointHoldLongest = 10.0;
 
 /// Everything about one cable that does not change during a run. Each constant is computed here, once,
 /// and every pass of the dynamics reads it from here: per link in `lanes` (eight links a block, the
@@ -62,6 +106,21 @@ class ChainModel {
   /// Sets the length of the winch's link (slot firstLink()) [m] and every constant that follows from
   /// it. O(1); the winch calls it for each evaluation.
   void setWinchLinkLength(double length);
+  /// The joints the winch has just made and the moments they hold (JointHold); at most kMaxJointHolds,
+  /// the oldest dropped first. holdJoint holds `joint` with `torque` [N m] from time `start` [s] and the
+  /// deployed length `deployed` [m], let go over kJointHoldLinks times `span` [m] of pay-out; it
+  /// replaces a hold of the same joint.
+  static constexpr int kMaxJointHolds = kJointHoldLinks + 1;
+  void holdJoint(int joint, const Eigen::Vector3d& torque, double damping, double start, double deployed,
+                 double span);
+  /// Each hold's fraction and moment at time t [s] and deployed length `deployed` [m]
+  /// (JointHold::fraction, now). O(holds); every evaluation calls it.
+  void setHoldState(double t, double deployed);
+  /// Drops the holds let go entirely (fraction 0 at the last setHoldState).
+  void dropReleasedHolds();
+  void releaseJoints() { hold_count_ = 0; }
+  int jointHolds() const { return hold_count_; }
+  const JointHold& jointHold(int i) const { return holds_[i]; }
   StiffnessModel stiffnessModel() const { return properties_.stiffness_model; }
   Formulation formulation() const { return formulation_; }
   /// Any joint spring or damper at all (the paper model with none skips the joint torques).
@@ -127,6 +186,9 @@ class ChainModel {
   std::vector<int> attachment_begin_;
   bool attachment_drag_ = false;
   std::vector<LinkConstants> lanes_;  // C++17's allocator honours the 64-byte alignment
+  std::array<JointHold, kMaxJointHolds> holds_{};  ///< the winch's joints made last, while held
+  int hold_count_ = 0;
+  void dropHold(int i);  ///< keeps the others in order
 };
 
 }  // namespace cable_dynamics

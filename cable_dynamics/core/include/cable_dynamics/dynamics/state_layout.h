@@ -35,6 +35,7 @@ struct StateLayout {
 
 /// What drives the ends during one evaluation (paper frame, z down, origin at the base's rest position).
 struct EndInputs {
+  double time = 0.0;  ///< [s] the simulator's time these inputs are at (the winch's joint holds read it)
   Eigen::Vector3d base_position = Eigen::Vector3d::Zero();      ///< [m]
   Eigen::Vector3d base_velocity = Eigen::Vector3d::Zero();      ///< [m/s]
   Eigen::Vector3d base_acceleration = Eigen::Vector3d::Zero();  ///< [m/s^2]
@@ -56,6 +57,7 @@ struct EndInputs {
   /// winch_length and grows at winch_speed, its material sliding out along its axis at that speed.
   bool winch = false;
   double winch_length = 0.0;        ///< [m]
+  double winch_deployed = 0.0;      ///< the deployed length L [m]
   double winch_speed = 0.0;         ///< + paying out [m/s]
   double winch_acceleration = 0.0;  ///< [m/s^2]
   /// The ROV body's thrust (load.mode body): force and moment at its origin, body frame [N, N m].

@@ -38,8 +38,8 @@ double endsInputPower(const ChainModel& model, const ChainData& data, const EndI
 
 double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power) {
   const double body = model.body().active ? data.body.fluid_power : 0.0;  // after the solve (finishRovBody)
-  return data.drag_power + added_mass_power + damperPower(model, data) - data.contact_dissipation + body -
-         axialLoss(model, data);
+  return data.drag_power + added_mass_power + damperPower(model, data) + jointHoldPower(model, data) -
+         data.contact_dissipation + body - axialLoss(model, data);
 }
 
 }  // namespace cable_dynamics
