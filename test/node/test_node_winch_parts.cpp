@@ -357,6 +357,11 @@ TEST(AxialOutputs, CableStateAndDiagnosticsCarryTheStretches) {
   EXPECT_DOUBLE_EQ(o.state.max_tension, sim.largestTension());
   EXPECT_GT(o.state.max_tension, 20.0 * 9.81);  // a snap pulls harder than the weight
   for (int k = 0; k < p.links; ++k) EXPECT_DOUBLE_EQ(o.state.strain[k], source.snapshot.chain.strain(k));
+  // Each link's TF frame sits at its base end as the dynamics have it, stretches included (the line is
+  // stretched by millimetres here; summed rounding 1e-15 m).
+  for (int k = 0; k < p.links; ++k) {
+    EXPECT_LT((source.links[k].position - source.snapshot.chain.ends.col(k)).norm(), 1e-12) << "link " << k;
+  }
   std::map<std::string, std::string> values;
   for (const auto& kv : o.diagnostics.status[0].values) values[kv.key] = kv.value;
   EXPECT_EQ(values["snaps"], std::to_string(sim.snaps()));

@@ -46,7 +46,12 @@ bool readOutputs(CableSimulator& sim, OutputSource& out) {
   // The joint springs' dV/dq as the dynamics computed them, with the clamps where the ends have them (a
   // clamp turning with the vessel or the ROV): one computation for the model and the message.
   out.spring_force = out.snapshot.chain.spring_force;
-  linkFrames(out.snapshot.axes, out.snapshot.twists, out.snapshot.chain.ends.col(0), sim.properties().length, out.links,
+  // Each link's frame at its base end: the levers are the links' lengths, stretched with axial elasticity
+  // (the frames then sit on the snapshot's ends; with the unstretched lengths they drifted by the stretches).
+  if (out.levers.size() != n) out.levers.resize(n);  // the first reading only
+  out.levers = sim.properties().length;
+  if (out.snapshot.chain.stretch.size() == n) out.levers += out.snapshot.chain.stretch;
+  linkFrames(out.snapshot.axes, out.snapshot.twists, out.snapshot.chain.ends.col(0), out.levers, out.links,
              out.after_azimuth, out.after_elevation, out.alpha_hint);
   if (!out.alpha_hint.allFinite()) out.alpha_hint.setZero();  // never let a bad hint outlive this instant
   return out.spring_force.allFinite() && finite(out.links) && finite(out.after_azimuth) &&

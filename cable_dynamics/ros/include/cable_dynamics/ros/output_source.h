@@ -29,6 +29,7 @@ struct OutputSource {
   PoseVector after_azimuth;          ///< (n) the URDF's frame after the azimuth joint, paper frame
   PoseVector after_elevation;        ///< (n) the URDF's frame after the elevation joint, paper frame
   Eigen::VectorXd alpha_hint;        ///< (n) keeps the URDF's azimuth continuous (linkFrames) [rad]
+  Eigen::VectorXd levers;            ///< (n) base end to far end of each link, l + s with axial elasticity [m]
 };
 
 /// Fills `out` from the simulator's present state. Returns false when the state cannot be evaluated or
