@@ -43,6 +43,9 @@ class OutputRecorder {
   double peak_force = 0.0;       ///< largest |wrench force| received [N]
   double peak_joint_rate = 0.0;  ///< largest |joint velocity| received [rad/s], of states stamped after:
   ros::Time peak_joint_rate_after;  ///< (zero: all) a subscriber queue may still hold older states
+  /// Largest cable_state.kinetic_energy of the states stamped after peak_joint_rate_after [J]: unlike a
+  /// joint rate (the paper's azimuth rate grows without bound near the vertical), no coordinate's choice.
+  double peak_kinetic_energy = 0.0;
 
   bool allReceived() const {
     return joint_count > 0 && state_count > 0 && marker_count > 0 && wrench_count > 0 && tf_count > 0;
@@ -88,6 +91,7 @@ class OutputRecorder {
     }
     check(m.load_force, "cable_state.load_force");
     check(m.base_force, "cable_state.base_force");
+    if (m.header.stamp > peak_joint_rate_after) peak_kinetic_energy = std::max(peak_kinetic_energy, m.kinetic_energy);
     state = m;
     ++state_count;
   }

@@ -3,6 +3,7 @@
 // steps mostly need substeps (/retry_cable). Each test records the fail-before of the starting commit in
 // its comment. The tests run in order; every wait is bounded.
 #include <cmath>
+#include <iostream>
 #include <limits>
 
 #include <Eigen/Core>
@@ -223,10 +224,19 @@ TEST_F(HostileInputs, ADivergedStepIsRecoveredWithTheInputsCarryingOn) {
   // as they did in 2 of 4 runs under load), nothing of the diverged step, or of what it led to, may appear.
   out->peak_joint_rate_after = out->state.header.stamp;
   out->peak_joint_rate = 0.0;
+  out->peak_kinetic_energy = 0.0;
   const double sim_after = out->state.sim_time;
   spinFor(4.0);  // no more current messages: the last one still acts
   EXPECT_GT(middle_x(), 0.5 * drifted) << "the current was dropped by the recovery";
-  EXPECT_LT(out->peak_joint_rate, 900.0) << "a state of the diverged step was published";
+  // Judged by the kinetic energy, not a joint rate: the recovered cable starts straight down, where the
+  // paper's azimuth rate has no bound. A published 959 rad/s failed the old 900 rad/s bound once, in a CI
+  // run under load; which state it came from was not recorded. After the recovery the peak joint rate
+  // varies from 105 to 174 rad/s between runs while the kinetic energy stays at 127 J: the cable in the
+  // 1.5 m/s current, pulled by the ROV it left. The violent state holds 6.5e8 J. Bound 1e3 J (8x the
+  // recovered cable's).
+  std::cout << "after the recovery: peak kinetic energy " << out->peak_kinetic_energy << " J, peak joint rate "
+            << out->peak_joint_rate << " rad/s\n";
+  EXPECT_LT(out->peak_kinetic_energy, 1e3) << "a state of the diverged step was published";
   EXPECT_GT(out->state.sim_time, sim_after + 3.0) << "simulated time did not carry on";
   EXPECT_EQ(out->non_finite, "");
   flow.twist.linear.x = 0.0;
