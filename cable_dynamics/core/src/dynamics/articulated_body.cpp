@@ -99,7 +99,7 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
     // The lever from the base end to the far end, l (+ s with axial elasticity).
     const double l = kAxial ? c.length[i] + block.stretch[i] : c.length[i];
     if (kAxial) {
-      const bool locked = k == model.links() - 1 && model.lastStretchLocked();
+      const bool locked = model.stretchLocked(k);
       const Vec3 u = block.u[i], m_u = child * u;
       const double inverse = locked ? 0.0 : 1.0 / dot(u, m_u);
       const double bias = inverse * (block.axial_tension[i] + dot(u, child_force));

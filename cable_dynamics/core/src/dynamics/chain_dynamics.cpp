@@ -182,7 +182,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
       out.stretch(k) = s;
       out.far_tension(k) = l.get(&LinkBlock::axial_tension, k);
       out.strain(k) = s / model_.get(&LinkConstants::length, k);
-      const bool locked = k == n - 1 && model_.lastStretchLocked();
+      const bool locked = model_.stretchLocked(k);
       if (!locked && s < 0.0) ++out.slack_links;
     }
   } else {

@@ -26,6 +26,7 @@
 #include <Eigen/LU>
 
 #include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/forces/axial_spring.h"
 #include "cable_dynamics/dynamics/forces/coupling.h"
 #include "cable_dynamics/dynamics/forces/joint_springs.h"
 #include "cable_dynamics/dynamics/forces/point_drag.h"
@@ -189,7 +190,7 @@ void StiffArticulatedBody::linearizeStretches(const ChainModel& model, const Cha
     const LinkBlock& block = data.links.of(k);
     const LinkConstants& constants = model.of(k);
     const double s = block.stretch[lane], rate = block.stretch_rate[lane];
-    const bool taut = s + std::max(0.0, horizon * rate) > -1e-3 * constants.length[lane];
+    const bool taut = s + std::max(0.0, horizon * rate) > -kClearlySlack * constants.length[lane];
     t.stretch_spring = taut ? constants.axial_stiffness[lane] : 0.0;
     t.stretch_damper = taut ? constants.axial_damping[lane] : 0.0;
   }
@@ -266,7 +267,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     const int i = LinkBlocks::lane(k);
     const double l = c.length[i];
     const Eigen::Vector3d u = toEigen(block.u[i]);
-    if (axial && !(k == n - 1 && model.lastStretchLocked())) {
+    if (axial && !model.stretchLocked(k)) {
       // The prismatic joint at the far end (axial elasticity): the outboard part passes along u the
       // stretch's tension and its impedance, u . J_v = -(T - extra) - (cd c + ck k) s'', so s'' =
       // -(U_v . d_far + U_r . alpha + u . p_v + T - extra) / D with U_r = rv u, U_v = vv u, D = u^T vv u +

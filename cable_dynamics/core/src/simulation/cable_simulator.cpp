@@ -219,14 +219,14 @@ void CableSimulator::watchStretches(bool count_snaps) {
   const int n = links();
   const bool body = hasBody();
   for (int k = model.firstLink(); k < n; ++k) {
-    if (k == n - 1 && model.lastStretchLocked()) continue;
+    if (model.stretchLocked(k)) continue;
     const int i = LinkBlocks::lane(k);
     const double s = x_(StateLayout::stretch(n, body, k)), rate = x_(StateLayout::stretchRate(n, body, k));
     const LinkConstants& c = model.of(k);
     largest_tension_ = std::max(largest_tension_, AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, rate));
     // A snap: a link shorter than unstretched by more than 0.1 % of its length that comes taut. The
     // margin keeps a taut line's light links, ringing about s = 0 after a snap, from counting each crossing.
-    if (s < -1e-3 * c.length[i]) {
+    if (s < -kClearlySlack * c.length[i]) {
       slack_[k] = 1;
     } else if (s >= 0.0) {
       if (count_snaps && slack_[k]) ++snaps_;

@@ -151,6 +151,8 @@ class ChainModel {
   /// With axial elasticity and no mass beyond the last link's far end (no load mass, no ROV body), the
   /// last link's stretch has nothing to accelerate: it stays rigid (and carries no tension there).
   bool lastStretchLocked() const { return axial_ && last_locked_; }
+  /// Link k's stretch is the locked one above.
+  bool stretchLocked(int k) const { return k == n_ - 1 && lastStretchLocked(); }
 
   /// Per-link constants, eight links a block; lanes past the last link hold a massless link of zero length.
   int blocks() const { return static_cast<int>(lanes_.size()); }

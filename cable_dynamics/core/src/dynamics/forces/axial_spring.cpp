@@ -15,7 +15,7 @@ void computeAxialTensions(const ChainModel& model, ChainData& data, const Eigen:
     const int i = LinkBlocks::lane(k);
     const LinkConstants& c = model.of(k);
     // A locked stretch (the last link with nothing beyond it: ChainModel::lastStretchLocked) stays 0.
-    const bool locked = model.lastStretchLocked() && k == n - 1;
+    const bool locked = model.stretchLocked(k);
     const double s = locked ? 0.0 : stretch[k], v = locked ? 0.0 : rate[k];
     const double t = AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, v);
     block.stretch[i] = s;

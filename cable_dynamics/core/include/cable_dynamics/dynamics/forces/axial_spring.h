@@ -10,6 +10,10 @@
 
 namespace cable_dynamics {
 
+/// A link shorter than unstretched by more than this share of its length is clearly slack: for the snap
+/// counter (CableSimulator::watchStretches) and the implicit step's matrix (linearizeStretches).
+constexpr double kClearlySlack = 1e-3;
+
 /// T = k s + c s' while the link is stretched (s > 0), clipped at zero (the damper does not push), and 0
 /// when it is slack (s <= 0): a cable carries no compression. k = EA / l [N/m], c = c_a / l [N s/m].
 struct AxialSpring {
