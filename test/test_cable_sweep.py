@@ -264,7 +264,10 @@ def test_unreliable_run_is_a_row(configs, tmp_path):
 
 
 def test_killed_worker_loses_no_case(configs, scheduler_cluster, tmp_path):
-    # 12 cases of about 0.5 s each on the two workers; one worker is killed once the first case is in.
+    # 12 cases of about 0.5 s each on the two workers. Once the first row is in, the worker running a case
+    # is found through the scheduler (its pid and the case it is processing) and killed with SIGKILL: that
+    # case must come back from the other worker, and no case may be missing or twice.
+    from dask.distributed import Client
     address, procs = scheduler_cluster
     sweep = write_sweep(configs / "long.yaml", "config: default.yaml\nduration: 8\naxes:\n"
                         "  cable.links: [60]\n  load.mass: [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0]\n")
@@ -272,17 +275,21 @@ def test_killed_worker_loses_no_case(configs, scheduler_cluster, tmp_path):
     sweep_proc = subprocess.Popen(sweep_cmd(sweep, out, "--scheduler", address), stdout=subprocess.PIPE,
                                   stderr=subprocess.PIPE, text=True)
     results = out / "results.csv"
-    deadline = time.monotonic() + 120
-    while time.monotonic() < deadline and not (results.exists() and len(results.read_text().splitlines()) >= 2):
-        time.sleep(0.05)
-    rows_at_kill = len(results.read_text().splitlines()) - 1
-    victim = procs[2]
-    victim.send_signal(signal.SIGKILL)
+    with Client(address, timeout=20) as client:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline and not (results.exists() and len(results.read_text().splitlines()) >= 2):
+            time.sleep(0.02)
+        busy = {w: keys for w, keys in client.processing().items() if keys}
+        assert busy, "no worker is running a case: make the cases longer"
+        worker, keys = next(iter(busy.items()))
+        pid = client.run(os.getpid, workers=[worker])[worker]
+        os.kill(pid, signal.SIGKILL)
+    killed_case = int(str(keys[0]).split("-")[2])  # keys are cable_sweep-case-<index>-<hash>
     stdout, stderr = sweep_proc.communicate(timeout=300)
     assert sweep_proc.returncode == 0, stderr
-    assert rows_at_kill < 12, "the sweep finished before the kill: make the cases longer"
     rows = read(results)
-    assert sorted(float(r["load.mass"]) for r in rows) == [float(m) for m in range(1, 13)]
+    assert sorted(int(r["case"]) for r in rows) == list(range(12))
+    assert any(int(r["case"]) == killed_case for r in rows)
     assert all(r["status"] == "ok" for r in rows), rows
 
 

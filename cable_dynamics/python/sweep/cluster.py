@@ -21,12 +21,12 @@ def connect(workers=None, scheduler=None):
     `workers` processes (default: one per core). Returns (client, the local cluster or None)."""
     if scheduler:
         try:
-            return Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False), None
+            return Client(scheduler, timeout=CONNECT_TIMEOUT), None
         except (OSError, TimeoutError, ValueError) as e:
             raise ClusterError(f"cannot reach the Dask scheduler at {scheduler} within {CONNECT_TIMEOUT:g} s ({e})")
     cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
                            dashboard_address=None, silence_logs=logging.ERROR)
-    return Client(cluster, set_as_default=False), cluster
+    return Client(cluster), cluster
 
 
 def run_cases(client, sweep, cases, keep_dir=None):

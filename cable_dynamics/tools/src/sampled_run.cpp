@@ -48,10 +48,10 @@ int SampledRun::run(double duration, double sample, const SampleHandler& on_samp
 
 int SampledRun::judge(int status, std::vector<std::string>& lines, std::string* unreliable) const {
   const StableStep stable = estimateStableStep(params_, sim_.properties());
-  // Each line is built as `std::ostringstream() << ...`, which is an ostream& to the temporary.
-  const auto text = [](std::ostream& line) { return static_cast<std::ostringstream&>(line).str(); };
-  const auto say = [&](std::ostream& line) { lines.push_back(text(line)); };
-  const auto fail = [&](std::ostream& line) {
+  // Each line is built as `std::ostringstream() << ...`: a reference to the temporary ostringstream.
+  const auto text = [](const std::ostream& line) { return static_cast<const std::ostringstream&>(line).str(); };
+  const auto say = [&](const std::ostream& line) { lines.push_back(text(line)); };
+  const auto fail = [&](const std::ostream& line) {
     lines.push_back(text(line));
     if (unreliable) *unreliable = lines.back();
     status = 5;

@@ -1,0 +1,69 @@
+#!/usr/bin/env python3
+"""cable_sweep's throughput on 1 and on 2 local workers, side by side (issue 25: two workers should give
+at least 1.8 times one worker's throughput on a 24-case sweep).
+
+Usage (after a build, in the devel space: `source scripts/env.bash`):
+    python3 bench/sweep/throughput.py [--repeats 5] [--duration 20] [--links 25]
+
+Each repeat runs the same 24-case sweep (the default umbilical, 24 load masses) once with --workers 1
+and once with --workers 2, in alternating order, each into a fresh directory, and times the whole
+command (its start-up, a local cluster's included). Throughput = 24 cases / wall time. It prints every
+run, then the ratio (2 workers / 1 worker) per repeat, its median and its range. A bench, not a test:
+the machine is shared, so the spread is part of the result.
+"""
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SWEEP_BIN = os.path.join(REPO, "scripts", "cable_sweep")
+CASES = 24
+
+
+def sweep_file(directory, duration, links):
+    masses = ", ".join(f"{5.0 + 0.5 * i:.1f}" for i in range(CASES))
+    path = os.path.join(directory, "bench_sweep.yaml")
+    with open(path, "w") as f:
+        f.write(f"config: {os.path.join(REPO, 'config', 'default.yaml')}\nduration: {duration}\n"
+                f"axes:\n  cable.links: [{links}]\n  load.mass: [{masses}]\n")
+    return path
+
+
+def timed_sweep(sweep, workers, directory):
+    out = tempfile.mkdtemp(prefix=f"w{workers}_", dir=directory)
+    start = time.monotonic()
+    done = subprocess.run([sys.executable, SWEEP_BIN, sweep, "--output", out, "--workers", str(workers)],
+                          capture_output=True, text=True)
+    wall = time.monotonic() - start
+    if done.returncode != 0:
+        sys.exit(f"cable_sweep failed ({done.returncode}):\n{done.stderr}")
+    return wall
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--repeats", type=int, default=5)
+    p.add_argument("--duration", type=float, default=20.0, help="simulated seconds per case")
+    p.add_argument("--links", type=int, default=25)
+    args = p.parse_args()
+    with tempfile.TemporaryDirectory() as directory:
+        sweep = sweep_file(directory, args.duration, args.links)
+        ratios = []
+        for r in range(args.repeats):
+            order = (1, 2) if r % 2 == 0 else (2, 1)
+            walls = {w: timed_sweep(sweep, w, directory) for w in order}
+            ratio = walls[1] / walls[2]  # throughput(2) / throughput(1)
+            ratios.append(ratio)
+            print(f"repeat {r + 1}: 1 worker {walls[1]:.2f} s ({CASES / walls[1]:.2f} cases/s), "
+                  f"2 workers {walls[2]:.2f} s ({CASES / walls[2]:.2f} cases/s), ratio {ratio:.3f}", flush=True)
+    print(f"{CASES} cases of {args.links} links, {args.duration:g} s each, {os.cpu_count()} cores: "
+          f"throughput ratio 2 workers / 1 worker: median {statistics.median(ratios):.3f}, "
+          f"range {min(ratios):.3f} to {max(ratios):.3f} over {len(ratios)} repeats")
+
+
+if __name__ == "__main__":
+    main()
