@@ -3,12 +3,13 @@
 Until the limits land in the model (issue 25 item 2) no case has a utilisation, and the map shows the
 largest link tension [N] instead (its colour bar says which). A cell holds the largest value over the
 cases that share its two values (the other axes and the random draws); a cell with a failed case is
-marked with a cross and the count of failures. Matplotlib with the Agg backend: no display needed."""
+framed in red with the count of failures. Matplotlib with the Agg backend: no display needed."""
 import math
 
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.patches  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
@@ -43,21 +44,28 @@ def draw_summary(rows, sweep, path):
             failed[i, j] += 1
         elif not math.isnan(value):
             grid[i, j] = value if math.isnan(grid[i, j]) else max(grid[i, j], value)
-    fig, ax = plt.subplots(figsize=(1.6 + 1.1 * len(x_values), 1.6 + 0.6 * len(y_values)), dpi=100)
+    fig, ax = plt.subplots(figsize=(max(5.0, 2.8 + 1.2 * len(x_values)), max(3.5, 1.8 + 0.8 * len(y_values))),
+                           dpi=100)
     image = ax.imshow(np.ma.masked_invalid(grid), origin="lower", aspect="auto", cmap="viridis")
     fig.colorbar(image, ax=ax, label=label)
     for i in range(len(y_values)):
         for j in range(len(x_values)):
             if not math.isnan(grid[i, j]):
-                ax.text(j, i, f"{grid[i, j]:.4g}", ha="center", va="center", color="white", fontsize=8)
+                # Dark text on the light end of the colour map, white on the dark end.
+                light = image.norm(grid[i, j]) > 0.6 if np.nanmax(grid) > np.nanmin(grid) else False
+                ax.text(j, i + 0.12, f"{grid[i, j]:.4g}", ha="center", va="center", fontsize=9,
+                        color="black" if light else "white")
             if failed[i, j]:
-                ax.plot(j, i, marker="x", color="red", markersize=14, markeredgewidth=2.5)
-                ax.text(j, i - 0.3, f"{failed[i, j]} failed", ha="center", va="center", color="red", fontsize=8)
+                ax.add_patch(matplotlib.patches.Rectangle((j - 0.47, i - 0.47), 0.94, 0.94, fill=False,
+                                                          edgecolor="red", linewidth=2.5))
+                ax.text(j, i - 0.22, f"x {failed[i, j]} failed", ha="center", va="center", color="red",
+                        fontsize=8, fontweight="bold",
+                        bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 1})
     ax.set_xticks(range(len(x_values)), x_values, rotation=30 if max(map(len, x_values)) > 6 else 0)
     ax.set_yticks(range(len(y_values)), y_values)
     ax.set_xlabel(x_key or "")
     ax.set_ylabel(y_key or "")
-    ax.set_title(f"{len(rows)} cases; red cross: a failed case (not ok)", fontsize=9)
+    ax.set_title(f"{len(rows)} cases; red frame: a failed case (status not ok)", fontsize=9)
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)
