@@ -59,6 +59,8 @@ def main(argv=None):
     status = 0
     if todo:
         status = _run(args, sweep, todo, table, keep_dir)
+        if status == 3 or not os.path.exists(table.path):  # no case ran: no table, no picture
+            return status
     try:
         draw_summary(read_rows(table.path), sweep, os.path.join(args.output, "summary.png"))
         _say(f"wrote {table.path} and {os.path.join(args.output, 'summary.png')}")
