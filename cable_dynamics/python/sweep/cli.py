@@ -7,6 +7,7 @@ output cannot be written."""
 import argparse
 import os
 import sys
+import time
 
 from .cases import make_cases
 from .cluster import ClusterError, connect, run_cases
@@ -94,6 +95,8 @@ def _run(args, sweep, todo, table, keep_dir):
             progress.case_done(ok=row["status"] == "ok")
         progress.finish()
         table.close()
+        took = time.monotonic() - progress.start
+        _say(f"ran {len(todo)} cases in {took:.2f} s ({len(todo) / took:.3g} cases/s) on {workers} workers")
         if lost:
             _say(f"{lost} cases lost (not in the table): a rerun runs them again")
             return 1
