@@ -33,6 +33,10 @@ def _parser():
     return p
 
 
+def _workers(count):
+    return f"{count} worker" + ("" if count == 1 else "s")
+
+
 def _say(text):
     print(f"cable_sweep: {text}", file=sys.stderr, flush=True)
 
@@ -82,13 +86,14 @@ def _run(args, sweep, todo, table, keep_dir):
             os.makedirs(keep_dir, exist_ok=True)
         table.open()
         workers = len(client.scheduler_info()["workers"])
-        _say(f"running {len(todo)} cases on {workers} workers ({args.scheduler or 'a local cluster'})")
+        _say(f"running {len(todo)} cases on {_workers(workers)} ({args.scheduler or 'a local cluster'})")
         progress = Progress(len(todo))
-        lost = 0
+        lost, unwritten = 0, 0
         for case, row in run_cases(client, sweep, todo, keep_dir):
-            if isinstance(row, Exception):
+            if isinstance(row, Exception):  # no row: the case is run again by the next rerun
                 progress.case_done(ok=False)
                 _say(f"case {case.index} ({' '.join(case.overrides)}) is lost: {type(row).__name__}: {row}")
+                unwritten += isinstance(row, OSError)  # its --keep CSV could not be written
                 lost += 1
                 continue
             table.append(case, row)
@@ -96,13 +101,16 @@ def _run(args, sweep, todo, table, keep_dir):
         progress.finish()
         table.close()
         took = time.monotonic() - progress.start
-        _say(f"ran {len(todo)} cases in {took:.2f} s ({len(todo) / took:.3g} cases/s) on {workers} workers")
+        _say(f"ran {len(todo)} cases in {took:.2f} s ({len(todo) / took:.3g} cases/s) on {_workers(workers)}")
         if lost:
             _say(f"{lost} cases lost (not in the table): a rerun runs them again")
-            return 1
+            return 4 if unwritten else 1
         return 0
     except ResultsError as e:
         _say(str(e))
+        return 4
+    except OSError as e:  # DIR/cases cannot be made
+        _say(f"cannot write {e.filename}: {e.strerror}")
         return 4
     except KeyboardInterrupt:
         _say("interrupted: the finished cases are in the table; a rerun runs the others")

@@ -32,7 +32,10 @@ def run_case(config, overrides, duration, sample, keep_csv=None):
     summary = Summary(has_winch=False)
     if row["status"] == "ok":
         summary.has_winch = sim.has_winch
-        outcome = sim.run(duration, sample, on_sample=summary.add, csv=keep_csv or "")
+        try:
+            outcome = sim.run(duration, sample, on_sample=summary.add, csv=keep_csv or "")
+        except RuntimeError as e:  # the only error run() raises: the CSV cannot be opened
+            raise OSError(str(e)) from e
         if outcome["status"] == 4:
             raise OSError(outcome["message"])
         row.update(status=RUN_STATUS[outcome["status"]], reason=outcome["message"])
