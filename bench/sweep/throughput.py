@@ -11,6 +11,11 @@ command (its start-up, a local cluster's included), and reads the time the cases
 its last line ("ran 24 cases in X s", from the first submission to the last row). Throughput = 24
 cases / time. It prints every run, then the ratio (2 workers / 1 worker) of both per repeat, their
 medians and ranges. A bench, not a test: the machine is shared, so the spread is part of the result.
+
+Beside it, in each repeat, the machine's own ceiling without Dask: 4 of the same cases run by
+Simulator.run in one process after the other, against 2 processes (multiprocessing) running 2 each at
+once. Its ratio is what two cores give two independent runs of this simulator here (memory bandwidth,
+the host's sharing of the virtual cores, other sessions), the most a sweep on 2 workers can reach.
 """
 import argparse
 import os
@@ -47,6 +52,30 @@ def timed_sweep(sweep, workers, directory):
     return wall, cases
 
 
+def _ceiling_case(args):
+    import cable_dynamics
+    links, duration, mass = args
+    sim = cable_dynamics.Simulator.from_file(os.path.join(REPO, "config", "default.yaml"),
+                                             [f"cable.links={links}", f"load.mass={mass}"])
+    return sim.run(duration)["status"]
+
+
+def ceiling(links, duration):
+    """Wall time of 4 cases one after the other in one process, and of 2 processes doing 2 each [s]."""
+    import multiprocessing
+    work = [(links, duration, 5.0 + i) for i in range(4)]
+    start = time.monotonic()
+    for w in work:
+        _ceiling_case(w)
+    serial = time.monotonic() - start
+    with multiprocessing.get_context("spawn").Pool(2) as pool:
+        pool.map(_ceiling_case, work[:2])  # start-up and imports outside the timing
+        start = time.monotonic()
+        pool.map(_ceiling_case, work, chunksize=1)
+        parallel = time.monotonic() - start
+    return serial, parallel
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--repeats", type=int, default=5)
@@ -55,15 +84,18 @@ def main():
     args = p.parse_args()
     with tempfile.TemporaryDirectory() as directory:
         sweep = sweep_file(directory, args.duration, args.links)
-        ratios = {"whole command": [], "cases only": []}
+        ratios = {"whole command": [], "cases only": [], "ceiling (no Dask)": []}
         for r in range(args.repeats):
             order = (1, 2) if r % 2 == 0 else (2, 1)
             times = {w: timed_sweep(sweep, w, directory) for w in order}
-            for i, what in enumerate(ratios):
+            for i, what in enumerate(list(ratios)[:2]):
                 ratios[what].append(times[1][i] / times[2][i])  # throughput(2) / throughput(1)
+            serial, parallel = ceiling(args.links, args.duration)
+            ratios["ceiling (no Dask)"].append(serial / parallel)
             print(f"repeat {r + 1}: 1 worker {times[1][0]:.2f} s (cases {times[1][1]:.2f} s), 2 workers "
                   f"{times[2][0]:.2f} s (cases {times[2][1]:.2f} s); ratio {ratios['whole command'][-1]:.3f} "
-                  f"(cases only {ratios['cases only'][-1]:.3f})", flush=True)
+                  f"(cases only {ratios['cases only'][-1]:.3f}); ceiling: 4 cases {serial:.2f} s in 1 process, "
+                  f"{parallel:.2f} s in 2, ratio {ratios['ceiling (no Dask)'][-1]:.3f}", flush=True)
     print(f"{CASES} cases of {args.links} links, {args.duration:g} s simulated each, {os.cpu_count()} cores:")
     for what, values in ratios.items():
         print(f"  throughput 2 workers / 1 worker, {what}: median {statistics.median(values):.3f}, "
