@@ -87,6 +87,8 @@ def _run(args, sweep, todo, table, keep_dir):
         table.open()
         workers = len(client.scheduler_info()["workers"])
         _say(f"running {len(todo)} cases on {_workers(workers)} ({args.scheduler or 'a local cluster'})")
+        if workers == 0:
+            _say("the scheduler has no worker yet: the cases wait for one (dask-worker " + args.scheduler + ")")
         progress = Progress(len(todo))
         lost, unwritten = 0, 0
         for case, row in run_cases(client, sweep, todo, keep_dir):
