@@ -7,6 +7,8 @@ What is checked, and against what:
   here from cable_sim's CSV with numpy (to 1e-9 relative: the CSV's 10 significant digits round by at
   most 5e-10 relative), and `--keep`'s time series is cable_sim's CSV byte for byte;
 * a case with `cable.links: 0` is a `refused` row whose reason names the key (cable_sim exits 2 for it);
+  an equilibrium start without an equilibrium is a `no_equilibrium` row (cable_sim exits 6), a run whose
+  step fails a `diverged` row with the summary of its samples (cable_sim exits 3, its CSV has them);
   a run cable_sim judges unreliable (exit 5: the implicit step putting energy into a kinked release, the
   case of test_unreliable_runs.py) is an `unreliable` row;
 * a rerun into the same directory runs no case again; a worker killed (SIGKILL) mid-sweep loses no case;
@@ -261,6 +263,41 @@ def test_unreliable_run_is_a_row(configs, tmp_path):
     assert [r["status"] for r in rows] == ["unreliable", "ok"], rows
     assert "energy balance rose" in rows[0]["reason"]
     check_against_cable_sim(rows, ["simulation.dt"], configs / "kinked.yaml", 10, tmp_path)
+
+
+def test_no_equilibrium_is_a_row(configs, tmp_path):
+    # paper_seabed.yaml's anchor moved 40 m aside and 20 m down from a 20 m cable's tip: no equilibrium to
+    # start from (cable_sim exits 6, test_presets.py); at its own anchor the start is solved and runs.
+    with open(os.path.join(REPO, "config", "paper_seabed.yaml")) as f:
+        (configs / "paper_seabed.yaml").write_text(f.read())
+    sweep = write_sweep(configs / "equilibrium.yaml", "config: paper_seabed.yaml\nduration: 0.5\naxes:\n"
+                        "  initial.mode: [equilibrium]\n  load.motion.offset: [[40.0, 0.0, 20.0], [0.0, 0.0, 0.0]]\n")
+    done = subprocess.run(sweep_cmd(sweep, tmp_path / "out", "--workers", "2"), capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    rows = sorted(read(tmp_path / "out" / "results.csv"), key=lambda r: int(r["case"]))
+    assert [r["status"] for r in rows] == ["no_equilibrium", "ok"], rows
+    assert "m long" in rows[0]["reason"], rows[0]
+    check_against_cable_sim(rows, ["initial.mode", "load.motion.offset"], configs / "paper_seabed.yaml", 0.5,
+                            tmp_path)
+
+
+def test_diverged_and_seabed_cases_equal_cable_sim(configs, tmp_path):
+    # tms_tether.yaml (a tether on the bottom, an equilibrium start) in a 0.5 m/s current along x diverges
+    # at t = 0.068 s; without a current its equilibrium start stalls (found while writing this test, on
+    # 2026-12-03: both are the simulator's verdicts, which cable_sim gives too). The rows of a failed run
+    # carry the summary of the samples it has, touchdown included, as cable_sim's CSV does.
+    with open(os.path.join(REPO, "config", "tms_tether.yaml")) as f:
+        (configs / "tms_tether.yaml").write_text(f.read())
+    sweep = write_sweep(configs / "tms.yaml", "config: tms_tether.yaml\nduration: 0.3\naxes:\n"
+                        "  fluid.current: [[0.0, 0, 0], [0.5, 0, 0]]\n")
+    done = subprocess.run(sweep_cmd(sweep, tmp_path / "out", "--workers", "2"), capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    rows = sorted(read(tmp_path / "out" / "results.csv"), key=lambda r: int(r["case"]))
+    assert [r["status"] for r in rows] == ["no_equilibrium", "diverged"], rows
+    assert "diverged even in 64 substeps" in rows[1]["reason"] and rows[1]["max_touchdown"] != "", rows[1]
+    check_against_cable_sim(rows, ["fluid.current"], configs / "tms_tether.yaml", 0.3, tmp_path)
 
 
 def test_killed_worker_loses_no_case(configs, scheduler_cluster, tmp_path):
