@@ -19,6 +19,9 @@ class ClusterError(RuntimeError):
 def connect(workers=None, scheduler=None):
     """A Dask client: on the cluster at `scheduler` (tcp://HOST:PORT), or on a new local cluster of
     `workers` processes (default: one per core). Returns (client, the local cluster or None)."""
+    # Dask's own news (a purged stale directory of a killed worker, connections) stays out of the sweep's
+    # output (cable_sweep reports a lost case itself); its errors still show.
+    logging.getLogger("distributed").setLevel(logging.ERROR)
     if scheduler:
         try:
             return Client(scheduler, timeout=CONNECT_TIMEOUT), None

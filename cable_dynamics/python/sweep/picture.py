@@ -24,9 +24,7 @@ def draw_summary(rows, sweep, path):
     """Draws the rows (results.read_rows) of `sweep` (sweep_file.Sweep) into the PNG at `path`."""
     metric = "max_utilisation" if any(r["max_utilisation"] for r in rows) else "max_tension"
     label = "largest utilisation [-]" if metric == "max_utilisation" else "largest link tension [N]"
-    axes = list(sweep.axes)[:2]
-    if not axes:  # samples only: one column of draws
-        axes = []
+    axes = list(sweep.axes)[:2]  # none for a sweep of random draws only: one cell, the largest of them all
     x_key = axes[0] if axes else None
     y_key = axes[1] if len(axes) > 1 else None
     x_values = [flow(v) for v in sweep.axes[x_key]] if x_key else ["all cases"]
