@@ -96,6 +96,10 @@ std::vector<std::string> csvColumns(int links, bool seabed, bool axial) {
   return c;
 }
 
+bool csvRowFinite(const SimulationSnapshot& s, bool seabed, bool axial) {
+  return forEachValue(s, seabed, axial, [](double x) { return std::isfinite(x); });
+}
+
 CsvWriter::CsvWriter(std::ostream& out, int links, std::size_t flush_bytes, bool seabed, bool axial)
     : out_(out),
       links_(links),
@@ -123,7 +127,7 @@ bool CsvWriter::writeRow(const SimulationSnapshot& s) {
   }
   // Nothing of a row with a non-finite value is written: check first, then format (the check is a small
   // fraction of the formatting).
-  if (!forEachValue(s, seabed_, axial_, [](double x) { return std::isfinite(x); })) return false;
+  if (!csvRowFinite(s, seabed_, axial_)) return false;
   bool first = true;
   forEachValue(s, seabed_, axial_, [&](double x) {
     if (!first) append(',');
