@@ -340,12 +340,18 @@ double largestAccurateStep(const std::string& yaml, const std::vector<std::strin
     Run run;
     try {
       run = runProject(projectParams(yaml, overrides, false, &unused, dt), duration, nullptr);
-    } catch (const std::exception&) {
+    } catch (const std::exception& e) {
       run.ok = false;
+      run.note = e.what();
     }
     const double deviation = deviationFrom(run, reference, from);
-    char text[64];
-    std::snprintf(text, sizeof text, "%s%g ms: %.2g%%", note.empty() ? "vs RK4: " : ", ", 1e3 * dt, 100 * deviation);
+    char text[96];
+    if (run.ok) {
+      std::snprintf(text, sizeof text, "%s%g ms: %.2g%%", note.empty() ? "vs RK4: " : ", ", 1e3 * dt, 100 * deviation);
+    } else {  // a step failed (diverged): said so, not a deviation
+      std::snprintf(text, sizeof text, "%s%g ms: failed at %.3g s", note.empty() ? "vs RK4: " : ", ", 1e3 * dt,
+                    run.t.empty() ? 0.0 : run.t.back());
+    }
     note += text;
     if (deviation <= kStepTolerance) return dt;
   }
