@@ -10,6 +10,8 @@
 
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/dynamics/elastic_joints.h"
+#include "cable_dynamics/dynamics/joint_geometry.h"
+#include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/params/states.h"
 #include "cable_dynamics/dynamics/paper_model.h"
 
@@ -196,4 +198,44 @@ TEST(ElasticJoints, BendingEnergyInvariantToRotationAboutVertical) {
   turned(1) += 0.7;
   turned(2) -= 0.7;
   EXPECT_NEAR(joints.energy(turned), joints.energy(q), 1e-12 * joints.energy(q));
+}
+
+// The twist across a joint whose two links rise steeply on either side of the vertical (paper frame: z
+// down), bent across it: the arc between the axes passes over the upward pole, where the holonomy's
+// arctangent changes branch (its solid angle is defined modulo 4 pi). Before the fix the twist jumped by
+// 4 pi between y = +1e-9 and y = -1e-9 (two whole turns for the torsion spring, from frames that moved by
+// nothing); now it is continuous: the two differ by round-off.
+TEST(JointGeometry, TwistIsContinuousOverTheUpwardPole) {
+  const auto axes = [](double y, Eigen::Vector3d& prev, Eigen::Vector3d& axis) {
+    prev = Eigen::Vector3d(0.335, y, -0.942).normalized();
+    axis = Eigen::Vector3d(-0.909, -y, -0.416).normalized();
+  };
+  Eigen::Vector3d prev, axis;
+  axes(1e-9, prev, axis);
+  const double holonomy = -jointGeometry(prev, axis, 0.0, 0.0).twist;  // the twist is sigma - sigma_prev - it
+  for (const double held : {0.0, 0.3, -1.0}) {  // the joint's twist [rad] on the y > 0 side
+    const double sigma = held + holonomy;
+    axes(1e-9, prev, axis);
+    const double before = jointGeometry(prev, axis, sigma, 0.0).twist;
+    axes(-1e-9, prev, axis);
+    const double after = jointGeometry(prev, axis, sigma, 0.0).twist;
+    EXPECT_NEAR(before, held, 1e-9);
+    EXPECT_NEAR(after, before, 1e-6) << "held " << held;  // before the fix: 4 pi apart
+  }
+  // And a twist a joint can hold is left as it is.
+  const Eigen::Vector3d a(0.0, 0.0, 1.0), b = Eigen::Vector3d(0.1, 0.0, 1.0).normalized();
+  EXPECT_NEAR(jointGeometry(a, b, 5.0, 0.0).twist, 5.0, 1e-12);
+}
+
+// The run that showed it: config/tms_tether.yaml (a soft tether's slack on the bottom, rising steeply to
+// the ROV) in a current along x keeps its links in the x-z plane, on the pole's branch cut. It stopped at
+// t = 0.097 s ("energy created": 526 J in one substep, even in 64 substeps); now it runs.
+TEST(JointGeometry, TetherInACurrentAlongTheBranchCutRuns) {
+  CableSimulator sim(loadConfigFile(std::string(CABLE_CONFIG_DIR) + "/tms_tether.yaml",
+                                    {"fluid.current=[0.3, 0, 0]"}));
+  for (int i = 0; i < 500; ++i) {  // 0.5 s at 1 ms
+    const StepReport report = sim.step();
+    ASSERT_TRUE(report.ok) << report.message;
+    ASSERT_EQ(report.substeps, 1) << "at t = " << sim.time();
+  }
 }

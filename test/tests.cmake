@@ -15,6 +15,7 @@ target_link_libraries(test_paper_model cable_dynamics_core ${GTEST_MAIN_LIBRARIE
 
 catkin_add_gtest(test_elastic_joints test/test_elastic_joints.cpp)
 target_link_libraries(test_elastic_joints cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_elastic_joints PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
 catkin_add_gtest(test_cable_model_cli test/test_cable_model_cli.cpp)
 target_link_libraries(test_cable_model_cli cable_dynamics_tools ${GTEST_MAIN_LIBRARIES})

@@ -289,29 +289,43 @@ bool CableSimulator::advance(double h) {
   // changed.
   const EnergyBalance before = start_balance_known_ ? start_balance_ : balanceNow();
   start_balance_known_ = false;
+  refused_energy_ = 0.0;
+  refusal_ = "the integrator's state was not finite";
   if (!scheme_->advance(dynamics_, ends_, time_, h, x_)) return false;
   time_ += h;
+  refusal_ = "a link's axis lost its length";
   if (!projectAxes(x_, n, firstLink())) return false;  // the links on a winch's drum do not move
   if (dynamics_.model().body().active) {  // the ROV's quaternion back to unit length
     auto attitude = x_.segment<4>(StateLayout::bodyAttitude(n));
     const double norm = attitude.norm();
+    refusal_ = "the ROV's attitude lost its unit length";
     if (!(norm > 0.5 && norm < 2.0)) return false;
     attitude /= norm;
   }
-  if (judgeStep(x_, n, limits_, firstLink()) != StepVerdict::kAccepted) return false;
+  const StepVerdict state_verdict = judgeStep(x_, n, limits_, firstLink());
+  refusal_ = verdictName(state_verdict);
+  if (state_verdict != StepVerdict::kAccepted) return false;
   EnergyBalance after;
   if (scheme_->balancesEnergy()) {
     // The energy after the step comes from an evaluation at the new state (which RK4 keeps as the next
     // step's first stage). A state where x' is not finite fails here, not one step later.
+    refusal_ = "the rates at the new state were not finite";
     if (!scheme_->evaluateEnd(dynamics_, ends_.at(time_), x_)) return false;
     double magnitude = 0.0;
     const double mechanical = dynamics_.solvedMechanicalEnergy(x_, magnitude);
     after = energyBalance(mechanical, magnitude, x_, n);
-    if (judgeEnergy(before, after, limits_) != StepVerdict::kAccepted) return false;
+    const StepVerdict energy_verdict = judgeEnergy(before, after, limits_);
+    if (energy_verdict != StepVerdict::kAccepted) {
+      refusal_ = verdictName(energy_verdict);
+      refused_energy_ = after.value - before.value;
+      refused_scale_ = std::max(before.mechanical, after.mechanical);
+      return false;
+    }
   } else {
     // Not judged step by step (its balance closes to second order), but followed at every step, so that no
     // sampling of the output hides a rise.
     after = balanceNow();
+    refusal_ = "a non-finite energy";
     if (!std::isfinite(after.value)) return false;
   }
   // The balance after this step is the next one's start; the drift (RK4) and the rise (implicit) since reset.
@@ -366,7 +380,12 @@ StepReport CableSimulator::step() {
   std::ostringstream message;
   message.precision(6);
   message << "step from t = " << t0 << " s diverged even in " << kMaxSubsteps << " substeps (dt = " << dt_
-          << " s); state kept at t = " << t0 << " s: q = [" << q_.transpose() << "], qd = [" << qd_.transpose() << "]";
+          << " s; the last substep refused for " << refusal_;
+  if (refused_energy_ != 0.0) {
+    message << ": " << refused_energy_ << " J in one substep, over " << limits_.energy_tolerance << " of the scale "
+            << refused_scale_ << " J";
+  }
+  message << "); state kept at t = " << t0 << " s: q = [" << q_.transpose() << "], qd = [" << qd_.transpose() << "]";
   report.ok = false;
   report.substeps = kMaxSubsteps;
   report.message = message.str();

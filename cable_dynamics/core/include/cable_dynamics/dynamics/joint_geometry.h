@@ -68,7 +68,14 @@ inline JointGeometry jointGeometry(const Eigen::Vector3d& prev, const Eigen::Vec
   // transportHolonomy(), with the series where the triangle is thin.
   const double vertical_triple = prev.x() * axis.y() - prev.y() * axis.x();
   const double holonomy = -2.0 * smallAtan2(vertical_triple, 1.0 + prev.z() + axis.z() + g.cosine);
+  // The holonomy is a solid angle, defined modulo 4 pi: where the arc from prev to axis passes over the
+  // upward pole (a steep rising pair of links bent across the vertical plane), the arctangent's branch
+  // jumps by 4 pi between two evaluations while the frames move by nothing, and the twist spring saw two
+  // whole turns appear (config/tms_tether.yaml in a current along x: 526 J in one substep, the run
+  // stopped at 0.097 s). The twist is brought back to (-2 pi, 2 pi], which changes no twist a joint can
+  // physically hold (a whole turn across one joint) and undoes the jump exactly.
   g.twist = sigma - sigma_prev - holonomy;
+  if (std::abs(g.twist) > 2.0 * M_PI) g.twist = std::remainder(g.twist, 4.0 * M_PI);
   return g;
 }
 

@@ -249,6 +249,11 @@ class CableSimulator {
   void couplingPort(const EndInputs& ends, SimulationSnapshot& out) const;
   /// One piece of a step, of length h: the scheme's advance, the projection of the axes, the judgement.
   bool advance(double h);
+  /// Why advance() last refused a step (a verdict of step_check.h, or the check that failed; static text,
+  /// no allocation in the step), for the message of a step that diverged even in substeps; with "energy
+  /// created", the energy it created [J] and the scale it was judged against [J].
+  const char* refusal_ = "";
+  double refused_energy_ = 0.0, refused_scale_ = 0.0;
   /// The energy balance at the present state and time, evaluated afresh.
   EnergyBalance balanceNow();
   /// The configured deployment: the drum's slots stowed, the winch at the configured length.
