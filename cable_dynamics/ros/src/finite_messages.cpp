@@ -70,7 +70,7 @@ bool allFinite(const NodeStatus& s) {
          std::isfinite(s.winch.line_pull) && std::isfinite(s.winch.commanded_speed) &&
          std::isfinite(s.winch.target_length) && std::isfinite(s.limits.max_utilisation) &&
          std::isfinite(s.limits.min_bend_radius) && std::isfinite(s.limits.tension_utilisation) &&
-         std::isfinite(s.limits.bend_utilisation) && std::isfinite(s.limits.clearance);
+         std::isfinite(s.limits.bend_utilisation) && std::isfinite(s.limits.seabed_clearance);
 }
 
 bool allFinite(const CableOutputs& o) {

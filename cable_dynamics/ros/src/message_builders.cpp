@@ -393,7 +393,7 @@ void updateLimitStatus(const SimulationSnapshot& snapshot, LimitStatus& status) 
   status.bend_utilisation = r.max_bend_utilisation;
   status.max_utilisation = r.max_utilisation;
   status.min_bend_radius = publishedRadius(r.min_bend_radius);
-  status.clearance = publishedRadius(r.seabed_clearance);
+  status.seabed_clearance = publishedRadius(r.seabed_clearance);
   if (status.exceeded()) ++status.cycles_in_excess;
 }
 
@@ -442,7 +442,7 @@ unsigned char diagnosticLevel(const NodeStatus& s, std::string& message) {
     };
     if (l.tension) add(" tension on link %.0f (utilisation %.3g);", l.tension_link + 1.0, l.tension_utilisation);
     if (l.bend) add(" bend on link %.0f (utilisation %.3g);", l.bend_link + 1.0, l.bend_utilisation);
-    if (l.clearance) add(" seabed clearance at link %.0f (%.3g m);", l.clearance_link + 1.0, l.clearance);
+    if (l.clearance) add(" seabed clearance at link %.0f (%.3g m);", l.clearance_link + 1.0, l.seabed_clearance);
     message = text;
     return DiagnosticStatus::WARN;
   }

@@ -72,7 +72,7 @@ struct LimitStatus {
   double tension_utilisation = 0.0, bend_utilisation = 0.0;  ///< the largest of each [-]
   double max_utilisation = 0.0;                              ///< [-]
   double min_bend_radius = kPublishedStraightRadius;         ///< [m], at most kPublishedStraightRadius
-  double clearance = kPublishedStraightRadius;               ///< seabed clearance [m], at most that too
+  double seabed_clearance = kPublishedStraightRadius;        ///< [m], at most that too
   unsigned cycles_in_excess = 0;  ///< published cycles with a limit exceeded, since start
   bool exceeded() const { return tension || bend || clearance; }
 };
