@@ -5,8 +5,10 @@
 // colour_by), red at the limit; and the option's refusal. The filling allocates nothing.
 #include <cmath>
 #include <cstdlib>
+#include <iomanip>
 #include <map>
 #include <new>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -34,10 +36,12 @@ namespace cable_dynamics {
 namespace {
 
 /// A hanging cable (10 links, 20 m, straight down at rest: every joint straight) whose top tension is the
-/// submerged weight g (w L + m_sub) = 719.4 N, with a safe working load of `swl` [N].
+/// submerged weight g (w L + m_sub) = 444.0 N, with a safe working load of `swl` [N].
 CableParams hanging(double swl) {
+  std::ostringstream value;
+  value << std::setprecision(17) << swl;
   return loadConfigString("cable: {links: 10, length: 20.0, diameter: 0.03, mass_per_length: 1.5, limits: "
-                          "{max_tension: " + std::to_string(swl) + ", min_bend_radius: 3.0}}\n"
+                          "{max_tension: " + value.str() + ", min_bend_radius: 3.0}}\n"
                           "load: {mass: 40.0, volume: 0.01}\nfluid: {density: 1025.0}\n");
 }
 
