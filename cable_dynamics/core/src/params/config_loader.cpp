@@ -52,7 +52,7 @@ void parseCable(Section cable, CableParams& p, CableRest& rest) {
   }
   p.axial_stiffness = cable.number("axial_stiffness", 0.0, 0.0, 1e13, false, "N");
   p.axial_damping = cable.number("axial_damping", 0.0, 0.0, 1e13, false, "N s");
-  if (cable.has("limits")) {
+  {
     // Each limit, when given, must be positive (the clearance may be 0); absent: no limit.
     Section limits = cable.sub("limits");
     LimitParams& l = p.limits;
@@ -263,7 +263,7 @@ void parseSections(const YAML::Node& rows, const CableRest& rest, CableParams& p
     s.drag_tangential = row.number("drag_tangential", p.fluid.drag_tangential, 0.0, 100.0, false, "");
     s.added_mass = row.number("added_mass", p.fluid.added_mass, 0.0, 100.0, false, "");
     s.min_bend_radius = p.limits.min_bend_radius;  // the cable's unless the section has its own
-    if (row.has("limits")) {
+    {
       Section limits = row.sub("limits");
       if (limits.has("min_bend_radius")) s.min_bend_radius = limits.number("min_bend_radius", 0.0, 0.0, 1e5, true, "m");
       limits.rejectUnknownKeys();
