@@ -46,6 +46,8 @@ DEB_PACKAGES=(
   librosbag-storage-dev libtf2-msgs-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure libnodeletlib-dev
   libnodeletlib-tools python3-nodelet
+  # cable_sweep: design sweeps on Dask's distributed scheduler (dask-scheduler, dask-worker)
+  python3-distributed
 )
 
 # Installs the Debian packages that are missing (apt-get update first), as root or through sudo.

@@ -461,3 +461,25 @@ def test_python_refuses_what_cable_sim_refuses_with_its_message(overrides, key, 
     with pytest.raises(ValueError) as from_dict:
         cable_dynamics.Simulator.from_dict(tree, overrides)
     assert str(from_dict.value) == message
+
+
+def test_run_samples_where_cable_sim_does():
+    # Simulator.run is cable_sim's run (tools/sampled_run.h): t = 0, every `sample` (every round(sample /
+    # dt) steps), and the last step; 105 steps of 1 ms sampled every 10 ms give 12 samples. The CSV it
+    # writes is compared with cable_sim's byte for byte in test_cable_sweep.py.
+    sim = cable_dynamics.Simulator.from_file(os.path.join(REPO, "config", "default.yaml"), ["cable.links=5"])
+    times = []
+    outcome = sim.run(0.105, sample=0.01, on_sample=lambda s: times.append(s.time))
+    assert outcome["status"] == 0 and outcome["message"] == "", outcome
+    assert times == pytest.approx([0.0] + [0.01 * k for k in range(1, 11)] + [0.105], abs=1e-12)
+    assert sim.time == pytest.approx(0.105, abs=1e-12)
+    for bad, name in (({"duration": 0.0}, "duration"), ({"duration": 1.0, "sample": -1.0}, "sample"),
+                      ({"duration": float("nan")}, "duration")):
+        with pytest.raises(ValueError, match=name):
+            sim.run(**bad)
+
+    def refuse(snapshot):  # an exception in the callback stops the run and comes back to the caller
+        raise KeyError("stop here")
+
+    with pytest.raises(KeyError, match="stop here"):
+        sim.run(1.0, on_sample=refuse)

@@ -115,6 +115,11 @@ cable_add_pytest(unreliable_runs test/test_unreliable_runs.py CABLE_SIM_BIN=$<TA
 add_dependencies(run_tests_cable_dynamics_pytest_unreliable_runs cable_sim)
 cable_add_pytest(beam_catenary test/test_beam_catenary.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>)
 add_dependencies(run_tests_cable_dynamics_pytest_beam_catenary cable_sim)
+# Issue 25: cable_sweep on a local Dask cluster and through dask-scheduler / dask-worker processes, against
+# direct cable_sim runs of its cases.
+cable_add_pytest(cable_sweep test/test_cable_sweep.py CABLE_SIM_BIN=$<TARGET_FILE:cable_sim>
+  CABLE_SWEEP_BIN=${CMAKE_CURRENT_SOURCE_DIR}/scripts/cable_sweep)
+add_dependencies(run_tests_cable_dynamics_pytest_cable_sweep cable_sim cable_dynamics_python)
 
 # The node over ROS (rostest): test/node/node_tests.cmake.
 include(${CMAKE_CURRENT_LIST_DIR}/node/node_tests.cmake)

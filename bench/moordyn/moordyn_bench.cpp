@@ -249,10 +249,14 @@ Run runMoorDyn(const std::string& file, const Heave& heave, double duration, con
 }
 
 /// The project's config `yaml` with `overrides` (key=value, as cable_sim's --set), for RK4 at its
-/// recommended step (computed once into *rk4_dt) or the implicit integrator at 10 ms.
-CableParams projectParams(const std::string& yaml, std::vector<std::string> overrides, bool rk4, double* rk4_dt) {
+/// recommended step (computed once into *rk4_dt) or the implicit integrator at `implicit_dt` [s].
+CableParams projectParams(const std::string& yaml, std::vector<std::string> overrides, bool rk4, double* rk4_dt,
+                          double implicit_dt = 0.01) {
   if (!rk4) {
-    overrides.insert(overrides.end(), {"simulation.integrator=implicit", "simulation.dt=0.01"});
+    std::ostringstream dt;
+    dt.precision(17);
+    dt << "simulation.dt=" << implicit_dt;
+    overrides.insert(overrides.end(), {"simulation.integrator=implicit", dt.str()});
     return cable_dynamics::loadConfigFile(yaml, overrides);
   }
   if (*rk4_dt <= 0) {  // the recommended RK4 step (half the stable limit), from a simulator built once
@@ -305,6 +309,53 @@ Run runProject(const CableParams& params, double duration, Deployment* record) {
   }
   if (sim.retriedSteps() > 0) run.note += std::to_string(sim.retriedSteps()) + " steps retried";
   return run;
+}
+
+/// The largest deviation of `run`'s fairlead tension from `reference`'s over the samples from `from` s on,
+/// as a fraction of the reference's range there (max - min); infinite when either run failed.
+double deviationFrom(const Run& run, const Run& reference, double from) {
+  if (!run.ok || !reference.ok || run.tension.size() != reference.tension.size()) {
+    return std::numeric_limits<double>::infinity();
+  }
+  double worst = 0.0, high = -1e300, low = 1e300;
+  for (size_t i = 0; i < run.t.size(); ++i) {
+    if (reference.t[i] < from - 1e-6) continue;
+    worst = std::max(worst, std::abs(run.tension[i] - reference.tension[i]));
+    high = std::max(high, reference.tension[i]);
+    low = std::min(low, reference.tension[i]);
+  }
+  return worst / std::max(high - low, 1e-300);
+}
+
+/// The implicit integrator's step "as large as accuracy allows": the largest of kImplicitLadder [s] whose
+/// fairlead tension stays within kStepTolerance of the range of the RK4 run `reference` (RK4 at its
+/// recommended step, whose own time-step error is far below: fourth order at a fraction of the implicit
+/// step) over the samples from `from` s on; 10 ms when none does. Each candidate's deviation goes to `note`.
+constexpr double kImplicitLadder[] = {0.1, 0.05, 0.025, 0.02};  // s, divisors of kSample
+constexpr double kStepTolerance = 0.01;                          // of the reference's tension range
+double largestAccurateStep(const std::string& yaml, const std::vector<std::string>& overrides, double duration,
+                           double from, const Run& reference, std::string& note) {
+  for (const double dt : kImplicitLadder) {
+    double unused = 0.0;
+    Run run;
+    try {
+      run = runProject(projectParams(yaml, overrides, false, &unused, dt), duration, nullptr);
+    } catch (const std::exception& e) {
+      run.ok = false;
+      run.note = e.what();
+    }
+    const double deviation = deviationFrom(run, reference, from);
+    char text[96];
+    if (run.ok) {
+      std::snprintf(text, sizeof text, "%s%g ms: %.2g%%", note.empty() ? "vs RK4: " : ", ", 1e3 * dt, 100 * deviation);
+    } else {  // a step failed (diverged): said so, not a deviation
+      std::snprintf(text, sizeof text, "%s%g ms: failed at %.3g s", note.empty() ? "vs RK4: " : ", ", 1e3 * dt,
+                    run.t.empty() ? 0.0 : run.t.back());
+    }
+    note += text;
+    if (deviation <= kStepTolerance) return dt;
+  }
+  return 0.01;
 }
 
 /// A reference fairlead tension series of MoorDyn's tests [N] against the run's time [s] (`start` s into
@@ -397,25 +448,38 @@ int main(int argc, char** argv) {
     const bool elastic = cable_dynamics::loadConfigFile(yaml, heave_override).axial_stiffness > 0.0;
     std::vector<std::string> rigid_override = heave_override;
     rigid_override.insert(rigid_override.end(), {"cable.axial_stiffness=0", "cable.axial_damping=0"});
-    constexpr int kSides = 5;
-    const char* names[kSides] = {"cable_dyn RK4", "cable_dyn impl", "cable_dyn RK4 rigid", "MoorDyn RK2",
-                                 "MoorDyn 0.1s"};
+    // The sides, in the table's order; kImplicitLarge: the implicit integrator at the largest step that keeps
+    // the tension within 1 % of the RK4 run's range (largestAccurateStep), chosen in the first repetition.
+    enum Side { kRk4, kImplicit, kImplicitLarge, kRk4Rigid, kMoorDynPerStep, kMoorDynSampled, kSides };
+    const char* names[kSides] = {"cable_dyn RK4", "cable_dyn impl", "cable_dyn impl large", "cable_dyn RK4 rigid",
+                                 "MoorDyn RK2", "MoorDyn 0.1s"};
+    // Where the dynamic part starts (as the table's dynamic columns): OrcaFlex's window, the payout's whole
+    // run, the tether after its first heave period.
+    const double dynamic_from = !orcaflex.empty() ? line.series_start : line.payout ? 0.0 : heave.period;  // s
+    double large_dt = 0.0;
+    std::string large_note;
     std::vector<double> walls[kSides];
     Run first[kSides];
     double rk4_dt = 0.0, rk4_rigid_dt = 0.0;
     Deployment deploy;
     for (int rep = 0; rep < reps; ++rep) {
       for (int side = 0; side < kSides; ++side) {
-        if (side == 2 && !elastic) continue;
+        if (side == kRk4Rigid && !elastic) continue;
         Run run;
         try {
-          if (side < 2)
-            run = runProject(projectParams(yaml, heave_override, side == 0, &rk4_dt), line.duration,
-                             line.payout && side == 0 && rep == 0 ? &deploy : nullptr);
-          else if (side == 2)
+          if (side == kRk4 || side == kImplicit)
+            run = runProject(projectParams(yaml, heave_override, side == kRk4, &rk4_dt), line.duration,
+                             line.payout && side == kRk4 && rep == 0 ? &deploy : nullptr);
+          else if (side == kImplicitLarge) {
+            if (rep == 0)  // against this repetition's RK4 run, which ran just before
+              large_dt = largestAccurateStep(yaml, heave_override, line.duration, dynamic_from, first[kRk4], large_note);
+            double unused = 0.0;
+            run = runProject(projectParams(yaml, heave_override, false, &unused, large_dt), line.duration, nullptr);
+            if (rep == 0) run.note = large_note + (run.note.empty() ? "" : "; " + run.note);
+          } else if (side == kRk4Rigid)
             run = runProject(projectParams(yaml, rigid_override, true, &rk4_rigid_dt), line.duration, nullptr);
           else
-            run = runMoorDyn(txt, heave, line.duration, line.payout ? &deploy : nullptr, side == 3);
+            run = runMoorDyn(txt, heave, line.duration, line.payout ? &deploy : nullptr, side == kMoorDynPerStep);
         } catch (const std::exception& e) {
           run.ok = false;
           run.note = e.what();
@@ -443,7 +507,7 @@ int main(int argc, char** argv) {
     }
     std::printf("\n");
     for (int side = 0; side < kSides; ++side) {
-      if (side == 2 && !elastic) continue;
+      if (side == kRk4Rigid && !elastic) continue;
       const Run& r = first[side];
       const auto mm = std::minmax_element(walls[side].begin(), walls[side].end());
       char wall[64], stat[96], dyn[64], err[64];
@@ -463,7 +527,7 @@ int main(int argc, char** argv) {
       // them: the largest difference of the tension less its static value, over twice the reference's
       // largest such excursion), the tether after its first heave period (the start from rest is a jolt),
       // the payout over the whole run (the winch starts at rest; its end against w L + W).
-      const double from = !orcaflex.empty() ? line.series_start : line.payout ? 0.0 : heave.period;  // s
+      const double from = dynamic_from;
       double d_max = -1e300, d_min = 1e300;
       for (size_t i = 0; i < r.t.size(); ++i)
         if (r.t[i] >= from - 1e-6) d_max = std::max(d_max, r.tension[i]), d_min = std::min(d_min, r.tension[i]);
@@ -509,6 +573,8 @@ int main(int argc, char** argv) {
   }
   std::printf(
       "Sides: cable_dynamics' RK4 at its recommended step and its implicit integrator at 10 ms with the line's EA\n"
+      "  (impl large: at the largest of 100, 50, 25, 20 ms whose tension stays within 1 %% of the RK4 run's range\n"
+      "  over the dynamic window, the note gives each candidate's deviation; 10 ms when none does)\n"
       "  and axial damping as MoorDyn's (lines/*.yaml; the payout none: a winch does not carry EA yet), RK4 rigid\n"
       "  at its recommended step with EA and c_a set to 0 (the inextensible links); MoorDyn (RK2, its\n"
       "  own step) called once per MoorDyn step (RK2 row: its errors are the ones to read) and once per 0.1 s as\n"

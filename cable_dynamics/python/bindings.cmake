@@ -16,7 +16,8 @@ pybind11_add_module(cable_dynamics_python MODULE
   ${CMAKE_CURRENT_LIST_DIR}/src/python_simulator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/config_from_python.cpp
 )
-target_link_libraries(cable_dynamics_python PRIVATE cable_dynamics_core)
+# cable_dynamics_tools: cable_sim's run (sampled_run.h) and CSV, which Simulator.run shares with it.
+target_link_libraries(cable_dynamics_python PRIVATE cable_dynamics_core cable_dynamics_tools)
 set(CABLE_PYTHON_PACKAGE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_PYTHON_DESTINATION})
 set_target_properties(cable_dynamics_python PROPERTIES
   OUTPUT_NAME _bindings
@@ -26,3 +27,11 @@ add_custom_command(TARGET cable_dynamics_python POST_BUILD
   COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_CURRENT_LIST_DIR}/__init__.py ${CABLE_PYTHON_PACKAGE_DIR}/__init__.py)
 install(TARGETS cable_dynamics_python LIBRARY DESTINATION ${CATKIN_PACKAGE_PYTHON_DESTINATION})
 install(FILES ${CMAKE_CURRENT_LIST_DIR}/__init__.py DESTINATION ${CATKIN_PACKAGE_PYTHON_DESTINATION})
+# cable_sweep's library, the subpackage cable_dynamics.sweep (pure Python, cable_dynamics/python/sweep/):
+# linked into the devel space's package at configure time (an edit needs no rebuild), installed beside
+# the module.
+file(MAKE_DIRECTORY ${CABLE_PYTHON_PACKAGE_DIR})
+execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_LIST_DIR}/sweep
+  ${CABLE_PYTHON_PACKAGE_DIR}/sweep)
+install(DIRECTORY ${CMAKE_CURRENT_LIST_DIR}/sweep DESTINATION ${CATKIN_PACKAGE_PYTHON_DESTINATION}
+  FILES_MATCHING PATTERN "*.py")

@@ -2,6 +2,7 @@
 /// \brief The Python module `cable_dynamics`: the simulator built from a config file or a dict, stepped,
 ///        read as numpy arrays, driven through its inputs. A thin layer over python_simulator.h.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,29 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
       .def_property_readonly("retried_steps", &PythonSimulator::retriedSteps)
       .def("stable_time_step", &PythonSimulator::stableTimeStep, "the recommended RK4 dt: half its estimated stability limit [s]")
       .def("snapshot", &PythonSimulator::snapshot, "The present instant as a Snapshot (numpy arrays).")
+      .def(
+          "run",
+          [](PythonSimulator& s, double duration, double sample, const py::object& on_sample, const std::string& csv) {
+            std::function<void(const Snapshot&)> handler;
+            if (!on_sample.is_none()) {
+              handler = [&on_sample](const Snapshot& snapshot) {
+                py::gil_scoped_acquire gil;
+                on_sample(snapshot);
+              };
+            }
+            RunOutcome outcome;
+            {
+              py::gil_scoped_release release;  // the steps run without the GIL; the callback takes it
+              outcome = s.run(duration, sample, handler, csv);
+            }
+            return py::dict("status"_a = outcome.status, "message"_a = outcome.message, "report"_a = outcome.report);
+          },
+          "duration"_a, "sample"_a = 0.01, "on_sample"_a = py::none(), "csv"_a = std::string(),
+          "cable_sim's run from the present instant, written once for both (tools/sampled_run.h): steps for "
+          "`duration` [s], calls on_sample(Snapshot) at t = 0, every `sample` [s] and at the end, writes "
+          "cable_sim's CSV of those samples to `csv` when given, and judges the run as cable_sim does. Returns "
+          "{'status': cable_sim's exit status (0 reliable, 3 diverged, 4 the CSV not written, 5 not reliable), "
+          "'message': the reason when not 0, 'report': the lines cable_sim prints after a run}.")
       .def("model", &PythonSimulator::model, "The paper model's matrices at the present state.")
       .def("set_state", &PythonSimulator::setState, "q"_a, "qd"_a, "Paper coordinates (3n) [rad], rates [rad/s].")
       .def("reset", &PythonSimulator::reset, "Back to the configured state and inputs at t = 0.")

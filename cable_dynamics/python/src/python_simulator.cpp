@@ -1,6 +1,8 @@
 #include "python_simulator.h"
 
 #include <cmath>
+#include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -8,6 +10,8 @@
 
 #include "cable_dynamics/dynamics/paper_model.h"
 #include "cable_dynamics/params/format_values.h"
+#include "cable_dynamics/tools/csv_output.h"
+#include "cable_dynamics/tools/sampled_run.h"
 
 namespace cable_dynamics {
 namespace python {
@@ -42,7 +46,51 @@ std::vector<std::string> PythonSimulator::coordinates() const { return coordinat
 
 Snapshot PythonSimulator::snapshot() {
   sim_.snapshot(snapshot_);
-  const SimulationSnapshot& s = snapshot_;
+  return toPython(snapshot_);
+}
+
+RunOutcome PythonSimulator::run(double duration, double sample, const std::function<void(const Snapshot&)>& on_sample,
+                                const std::string& csv) {
+  if (!(duration > 0.0) || !std::isfinite(duration)) {
+    throw std::invalid_argument("duration = " + formatNumber(duration) + ": expected a finite number > 0 [s]");
+  }
+  if (!(sample > 0.0) || !std::isfinite(sample)) {
+    throw std::invalid_argument("sample = " + formatNumber(sample) + ": expected a finite number > 0 [s]");
+  }
+  const bool seabed = params_.seabed.enabled, axial = params_.stretches();
+  std::ofstream file;
+  std::unique_ptr<CsvWriter> writer;
+  if (!csv.empty()) {
+    file.open(csv);
+    if (!file) throw std::runtime_error("cannot write " + csv);
+    writer = std::make_unique<CsvWriter>(file, params_.links, CsvWriter::kDefaultFlushBytes, seabed, axial);
+    writer->writeHeader();
+  }
+  SampledRun sampled(sim_, params_);
+  RunOutcome out;
+  out.status = sampled.run(
+      duration, sample,
+      [&](const SimulationSnapshot& s, std::string& why) {
+        // cable_sim's check: a row with a non-finite value stops the run (its CSV never holds one).
+        if (writer ? !writer->writeRow(s) : !csvRowFinite(s, seabed, axial)) {
+          why = "non-finite output at t = " + formatNumber(s.time) + " s; stopped";
+          return 3;
+        }
+        if (on_sample) on_sample(toPython(s));
+        return 0;
+      },
+      {}, out.message);
+  if (writer && !writer->flush() && out.status == 0) {
+    out.status = 4;
+    out.message = "cannot write " + csv;
+  }
+  std::string unreliable;
+  out.status = sampled.judge(out.status, out.report, &unreliable);
+  if (out.status == 5) out.message = unreliable;
+  return out;
+}
+
+Snapshot PythonSimulator::toPython(const SimulationSnapshot& s) const {
   Snapshot out;
   out.time = s.time;
   out.q = s.q;

@@ -4,6 +4,7 @@
 ///        every input (finite, in range, right size) and the outputs copied into shapes numpy users expect.
 ///        No physics here: every number comes from the core.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,15 @@ struct ModelTerms {
   double kinetic_energy = 0.0, potential_energy = 0.0, elastic_energy = 0.0;  ///< [J]
 };
 
+/// How Simulator.run ended: cable_sim's exit status for the same run (0 finished and reliable, 3 diverged,
+/// 4 the CSV could not be written, 5 not reliable), the reason when it is not 0, and the lines cable_sim
+/// prints after a run (substeps, energy balance, seabed).
+struct RunOutcome {
+  int status = 0;
+  std::string message;
+  std::vector<std::string> report;
+};
+
 /// Owns the parameters and the simulator. Every input is checked here and refused with
 /// std::invalid_argument (Python: ValueError) naming the argument, its value and the allowed range.
 class PythonSimulator {
@@ -82,6 +92,13 @@ class PythonSimulator {
   std::vector<std::string> coordinates() const;
 
   Snapshot snapshot();
+  /// cable_sim's run from the present instant (tools/sampled_run.h): `duration` [s] (> 0), a sample every
+  /// `sample` [s] (> 0), each passed to `on_sample` (may be empty; a false return stops nothing, an
+  /// exception it throws stops the run and is rethrown), and when `csv` is not empty cable_sim's CSV of
+  /// those samples written there. Throws std::invalid_argument for a bad duration or sample,
+  /// std::runtime_error when the CSV cannot be opened.
+  RunOutcome run(double duration, double sample, const std::function<void(const Snapshot&)>& on_sample,
+                 const std::string& csv);
   ModelTerms model();
   /// Paper coordinates (3n) [rad] and rates (3n) [rad/s].
   void setState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
@@ -117,6 +134,7 @@ class PythonSimulator {
   CableParams params_;
   CableSimulator sim_;
   SimulationSnapshot snapshot_;  ///< reused between calls
+  Snapshot toPython(const SimulationSnapshot& s) const;
 };
 
 }  // namespace python

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "cable_dynamics/ros/stop_request.h"
+
 namespace cable_dynamics {
 namespace {
 
@@ -55,6 +57,8 @@ LiveTuning::LiveTuning(const ros::NodeHandle& nh, const TunableValues& initial, 
 
 void LiveTuning::show(const TunableValues& values) {
   in_force_ = values;
+  // Showing sets parameters on the master, which a Ctrl-C stops together with this node (stop_request.h).
+  if (stopRequested()) return;
   TuningConfig config;
   toConfig(values, config);
   server_.updateConfig(config);

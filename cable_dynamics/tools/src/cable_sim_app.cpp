@@ -9,6 +9,7 @@
 #include <fstream>
 #include <memory>
 #include <iomanip>
+#include <sstream>
 #include <sys/stat.h>
 
 #include "cable_dynamics/simulation/cable_simulator.h"
@@ -16,41 +17,10 @@
 #include "cable_dynamics/tools/cli_options.h"
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/tools/csv_output.h"
+#include "cable_dynamics/tools/sampled_run.h"
 
 namespace cable_dynamics {
 namespace {
-
-/// A run in which more than this fraction of the steps needed substeps exits with status 5.
-constexpr double kMaxRetriedFraction = 0.01;
-/// A run whose energy balance drifts by more than this fraction of its scale exits with status 5.
-constexpr double kMaxEnergyDrift = 1e-3;
-/// The same for a scheme judged at the samples (the implicit one), whose balance closes to second order,
-/// not to RK4's fourth: a rise beyond this fraction of the scale exits with status 5. Measured with
-/// `--sample 0.01` over the presets' runs at their steps: 2.9e-7 (armoured umbilical) and 2.0e-4 (soft
-/// tether) of the scale, 1.8e-3 for the TMS tether at 10 ms (its ROV's stiff coupling damper: the work's
-/// second-order error, 4.2e-4 at 5 ms; its link ends within 0.8 mm of RK4's); an undamped kinked
-/// release at four times its recommended step, whose first steps put in 13 J: 3.6e-2
-/// (test_unreliable_runs.py).
-constexpr double kMaxSampledRise = 1e-2;
-
-/// The energy balance (mechanical energy + dissipated - work input) over the samples of a run, against
-/// its scale (the largest |kinetic| + |potential| + elastic seen) [-].
-class SampledBalance {
- public:
-  explicit SampledBalance(const SimulationSnapshot& start) : start_(start.total_energy) { add(start); }
-  void add(const SimulationSnapshot& s) {
-    scale_ = std::max(scale_, std::abs(s.chain.kinetic_energy) + std::abs(s.chain.potential_energy) +
-                                  std::abs(s.chain.elastic_energy));
-    highest_ = std::max(highest_, s.total_energy - start_);
-    lowest_ = std::min(lowest_, s.total_energy - start_);
-  }
-  double scale() const { return scale_; }
-  double rise() const { return scale_ > 0.0 ? highest_ / scale_ : 0.0; }
-  double fall() const { return scale_ > 0.0 ? -lowest_ / scale_ : 0.0; }
-
- private:
-  double start_, scale_ = 0.0, highest_ = 0.0, lowest_ = 0.0;  ///< [J]
-};
 
 const char* const kUsage =
     "usage: cable_sim --config FILE [--set key.path=value ...] [--duration S] --output run.csv\n"
@@ -205,54 +175,32 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   std::string record_error;
   CsvWriter writer(csv, params.links, CsvWriter::kDefaultFlushBytes, params.seabed.enabled, params.stretches());
   writer.writeHeader();
-  SimulationSnapshot snapshot;
-  sim.snapshot(snapshot);
-  writer.writeRow(snapshot);
-  if (recorder && !recorder->record(sim, record_error)) {
-    err << "cable_sim: " << o.bag << ": " << record_error << "\n";
-    return 4;
-  }
   const double duration = o.duration ? *o.duration : params.simulation.duration;
-  const long steps = std::lround(duration / sim.dt());
-  const long every = std::max(1L, std::lround(sample / sim.dt()));
   ProgressBar progress(err, duration);
-  long retried = 0;
-  int status = 0;
-  // Samples in which something sank into the seabed deeper than seabed.penetration allows.
-  long sunk = 0;
-  // A scheme whose step is not judged by the energy balance (the implicit one: it closes to second order,
-  // not to round-off) is judged at the samples: its balance may fall (numerical damping of the fast
-  // modes, below rho_inf = 1), but a rise is energy the step put in.
-  SampledBalance balance(snapshot);
-  double deepest = snapshot.chain.seabed.max_penetration;
-  for (long i = 1; i <= steps; ++i) {
-    const StepReport report = sim.step();
-    if (!report.ok) {
-      progress.finish(sim.time());
-      err << "cable_sim: " << report.message << "\n";
-      status = 3;
-      break;
-    }
-    if (report.substeps > 1) ++retried;
-    if (i % every == 0 || i == steps) {
-      sim.snapshot(snapshot);
-      deepest = std::max(deepest, snapshot.chain.seabed.max_penetration);
-      balance.add(snapshot);
-      if (params.seabed.enabled && snapshot.chain.seabed.max_penetration > params.seabed.penetration) ++sunk;
-      if (!writer.writeRow(snapshot)) {
-        err << "cable_sim: non-finite output at t = " << sim.time() << " s; stopped\n";
-        status = 3;
-        break;
-      }
-      if (recorder && !recorder->record(sim, record_error)) {
-        err << "cable_sim: " << o.bag << ": " << record_error << " at t = " << sim.time() << " s; stopped\n";
-        status = 4;
-        break;
-      }
-    }
-    progress.update(sim.time());
-  }
-  if (status == 0) progress.finish(sim.time());
+  // The steps, the samples and the verdict: tools/sampled_run.h (the Python module's Simulator.run too).
+  SampledRun run(sim, params);
+  std::string error;
+  int status = run.run(
+      duration, sample,
+      [&](const SimulationSnapshot& snapshot, std::string& why) {
+        if (!writer.writeRow(snapshot)) {
+          std::ostringstream message;
+          message << "non-finite output at t = " << snapshot.time << " s; stopped";
+          why = message.str();
+          return 3;
+        }
+        if (recorder && !recorder->record(sim, record_error)) {
+          std::ostringstream message;
+          message << o.bag << ": " << record_error;
+          if (snapshot.time > 0.0) message << " at t = " << snapshot.time << " s; stopped";
+          why = message.str();
+          return 4;
+        }
+        return 0;
+      },
+      [&](double t) { progress.update(t); }, error);
+  progress.finish(sim.time());
+  if (status != 0) err << "cable_sim: " << error << "\n";
   if (!writer.flush()) {
     err << "cable_sim: cannot write " << o.output << "\n";
     if (status == 0) status = 4;
@@ -262,43 +210,9 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
     err << "cable_sim: " << o.bag << ": " << record_error << "\n";
     if (status == 0) status = 4;
   }
-  if (retried > 0) err << "cable_sim: " << retried << " steps needed substeps after diverging at dt\n";
-  // A run whose steps mostly had to be redone in pieces is not the run the configuration asked for.
-  const long done = std::lround(sim.time() / sim.dt());
-  if (status == 0 && done > 0 && retried > kMaxRetriedFraction * done) {
-    err << "cable_sim: " << retried << " of " << done << " steps (more than " << 100 * kMaxRetriedFraction
-        << " %) needed substeps: the result is not reliable at dt = " << sim.dt() << " s; use dt <= "
-        << stable.recommended << " s or simulation.integrator: implicit (dt " << stable.implicit_recommended << " s)\n";
-    status = 5;
-  }
-  // The energy balance holds to RK4's error (presets: at most 4e-5 of the energy scale over a run, the
-  // free fall in air); a drift of more than kMaxEnergyDrift is an unstable mode let through step by step.
-  if (status == 0 && sim.energyDrift() > kMaxEnergyDrift) {
-    err << "cable_sim: the energy balance drifted by " << sim.energyDrift() << " of its scale (more than "
-        << kMaxEnergyDrift << "): the result is not reliable at dt = " << sim.dt() << " s\n";
-    status = 5;
-  }
-  if (sim.energyDrift() < 0.0) {
-    err << "cable_sim: energy balance at the samples: rose at most " << balance.rise() << " and fell at most "
-        << balance.fall() << " of its scale " << balance.scale() << " J; at every step: rose at most "
-        << sim.energyRise() << "\n";
-    // Judged at every step (the simulator follows the balance step by step), so that no sampling hides a
-    // rise: a run sampled every 0.5 s once passed where one sampled every 10 ms exited 5.
-    if (status == 0 && std::max(balance.rise(), sim.energyRise()) > kMaxSampledRise) {
-      err << "cable_sim: the energy balance rose by " << std::max(balance.rise(), sim.energyRise()) << " of its scale (more than " << kMaxSampledRise
-          << "): the step put energy in; the result is not reliable at dt = " << sim.dt() << " s (recommended "
-          << stable.implicit_recommended << " s)\n";
-      status = 5;
-    }
-  }
-  if (params.seabed.enabled) {
-    err << "cable_sim: deepest penetration into the seabed " << deepest << " m (allowed " << params.seabed.penetration << " m)\n";
-  }
-  if (status == 0 && sunk > 0) {
-    err << "cable_sim: in " << sunk << " samples the cable or the load sank deeper into the seabed than seabed.penetration = "
-        << params.seabed.penetration << " m (deepest " << deepest << " m): raise seabed.stiffness or the penetration\n";
-    status = 5;
-  }
+  std::vector<std::string> report;
+  status = run.judge(status, report);
+  for (const std::string& line : report) err << "cable_sim: " << line << "\n";
   err << "cable_sim: wrote " << o.output << (recorder ? " and " + o.bag : std::string()) << " (t = 0 to "
       << sim.time() << " s)\n";
 

@@ -111,6 +111,13 @@ std::vector<std::string> csvColumns(int links, bool seabed, bool axial) {
   return c;
 }
 
+bool csvRowFinite(const SimulationSnapshot& s, bool seabed, bool axial) {
+  // A bend radius may be +inf (a straight joint, written `inf`); nothing else may be non-finite.
+  const auto finite = [](double x) { return std::isfinite(x); };
+  const auto radius = [](double x) { return std::isfinite(x) || x == LimitReport::kStraight; };
+  return forEachValue(s, seabed, axial, finite, radius);
+}
+
 CsvWriter::CsvWriter(std::ostream& out, int links, std::size_t flush_bytes, bool seabed, bool axial)
     : out_(out),
       links_(links),
@@ -138,9 +145,7 @@ bool CsvWriter::writeRow(const SimulationSnapshot& s) {
   }
   // Nothing of a row with a non-finite value is written (a bend radius may be +inf: a straight joint,
   // written `inf`): check first, then format (the check is a small fraction of the formatting).
-  const auto finite = [](double x) { return std::isfinite(x); };
-  const auto radius = [](double x) { return std::isfinite(x) || x == LimitReport::kStraight; };
-  if (!forEachValue(s, seabed_, axial_, finite, radius)) return false;
+  if (!csvRowFinite(s, seabed_, axial_)) return false;
   bool first = true;
   const auto write = [&](double x) {
     if (!first) append(',');

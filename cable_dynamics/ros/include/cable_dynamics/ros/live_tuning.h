@@ -26,7 +26,8 @@ class LiveTuning {
   /// and not what an earlier run left on the parameter server).
   LiveTuning(const ros::NodeHandle& nh, const TunableValues& initial, Apply apply);
 
-  /// Shows values changed elsewhere (the set_paused service) without calling the node back.
+  /// Shows values changed elsewhere (the set_paused service) without calling the node back. Once the node
+  /// is stopping (stopRequested()) they are kept but not sent: the master may already be gone.
   void show(const TunableValues& values);
 
  private:

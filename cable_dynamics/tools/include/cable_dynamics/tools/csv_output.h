@@ -28,6 +28,11 @@ constexpr int kCsvSignificantDigits = 10;
 /// per link [-], min_bend_radius [m] and max_utilisation [-].
 std::vector<std::string> csvColumns(int links, bool seabed = false, bool axial = false);
 
+/// Whether every value of the row cable_sim's CSV would write for `s` is finite, a bend radius's +inf (a
+/// straight joint) allowed (CsvWriter::writeRow writes nothing and returns false otherwise): the same check
+/// for a run that writes no CSV (Simulator.run).
+bool csvRowFinite(const SimulationSnapshot& s, bool seabed = false, bool axial = false);
+
 /// Writes cable_sim's CSV to a stream: the header, then rows formatted into a buffer sized once for
 /// `links` and handed to the stream whenever it holds more than `flush_bytes`, and at flush().
 class CsvWriter {
