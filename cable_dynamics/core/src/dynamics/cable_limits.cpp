@@ -28,7 +28,9 @@ void reportLimits(const ChainModel& model, const ChainData& data, const Eigen::V
   const LinkProperties& p = model.properties();
   const LinkBlocks& links = data.links;
   const int n = model.links(), first = model.firstLink();
-  report = LimitReport{std::move(report.bend_radius), std::move(report.utilisation)};  // keeps the buffers
+  // Every scalar back to its default; the two vectors move through the fresh report and back, so their
+  // buffers are kept (no allocation once sized).
+  report = LimitReport{std::move(report.bend_radius), std::move(report.utilisation)};
   report.bend_radius.resize(n);  // a no-op after the first call
   report.utilisation.resize(n);
   report.bend_radius.setConstant(LimitReport::kStraight);
