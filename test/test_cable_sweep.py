@@ -76,10 +76,12 @@ def write_sweep(path, text):
 
 @pytest.fixture(scope="module")
 def configs(tmp_path_factory):
-    """The default umbilical and the kinked release (as files), in one directory."""
+    """The default umbilical (with cable.limits) and the kinked release (as files), in one directory."""
     d = tmp_path_factory.mktemp("configs")
     with open(DEFAULT) as f:
         default = yaml.safe_load(f)
+    # Limits (docs/MODEL.md section 13), so that the summary's max_utilisation is not all 0.
+    default["cable"]["limits"] = {"max_tension": 150.0, "min_bend_radius": 5.0}
     (d / "default.yaml").write_text(yaml.safe_dump(default))
     kinked = dict(default)
     for key, value in KINKED.items():
@@ -172,7 +174,8 @@ def summary_from_csv(path):
             "min_grounded_length": data["grounded_length"].min(), "max_grounded_length": data["grounded_length"].max(),
             "min_touchdown": touching.min() if touching.size else None,
             "max_touchdown": touching.max() if touching.size else None,
-            "max_slack_links": int(data["slack_links"].max()) if "slack_links" in names else 0}
+            "max_slack_links": int(data["slack_links"].max()) if "slack_links" in names else 0,
+            "min_bend_radius": data["min_bend_radius"].min(), "max_utilisation": data["max_utilisation"].max()}
 
 
 def overrides_of(row, keys):

@@ -24,8 +24,10 @@ const char* const kWinchConfig = R"(
 cable: {links: 4, length: 8.0, diameter: 0.03, mass_per_length: 1.0,
         stiffness: {model: bending, bending_rigidity: 10.0, torsional_rigidity: 5.0},
         damping: {elevation: 0.1, azimuth: 0.1, torsion: 0.1},
+        limits: {max_tension: 1.0e4, min_bend_radius: 1.0, min_seabed_clearance: 0.5},
         sections: [{length: 4.0, diameter: 0.03, mass_per_length: 1.0, bending_rigidity: 10.0,
-                    torsional_rigidity: 5.0, drag_normal: 1.0, drag_tangential: 0.01, added_mass: 1.0},
+                    torsional_rigidity: 5.0, drag_normal: 1.0, drag_tangential: 0.01, added_mass: 1.0,
+                    limits: {min_bend_radius: 2.0}},
                    {material_density: 2000.0}]}
 load: {mass: 10.0, volume: 0.001, mode: attached, fixity: clamped, direction: [0, 0, -1], drag_area: 0.1,
        added_mass: 1.0, coupling: {stiffness: 1.0e4, damping: 1.0e3}, attachment: [0, 0, 0],

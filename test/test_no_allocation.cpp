@@ -175,6 +175,39 @@ TEST(NoAllocation, AxialElasticity) {
                       "cable.stiffness={model: bending, bending_rigidity: 50.0}", "seabed={depth: 15.0}"});
 }
 
+TEST(NoAllocation, LimitsInTheSnapshot) {
+  // The limits (dynamics/cable_limits.h) are computed in every snapshot, which cable_sim and the node take
+  // each sample or cycle: bend radii against both clamps, utilisation with a tension and a per-section bend
+  // limit, the seabed clearance. After the first snapshot (it sizes the outputs) no snapshot allocates.
+  CableParams p = loadConfigString(R"(
+cable: {links: 8, length: 16.0, diameter: 0.03, mass_per_length: 1.0,
+        stiffness: {model: bending, bending_rigidity: 50.0},
+        limits: {max_tension: 100.0, min_bend_radius: 2.0, min_seabed_clearance: 1.0},
+        sections: [{length: 8.0}, {length: 8.0, limits: {min_bend_radius: 3.0}}]}
+load: {mass: 5.0, volume: 0.002, mode: anchored, fixity: clamped}
+fluid: {density: 1025.0, current: [1.0, 0.2, 0.0]}
+seabed: {depth: 18.0}
+initial: {elevation: 0.3}
+simulation: {integrator: implicit, dt: 0.01}
+)");
+  CableSimulator sim(p);
+  SimulationSnapshot s;
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(sim.step().ok);
+  sim.snapshot(s);  // sizes the snapshot's vectors
+  AllocationGuard guard;
+  guard.start();
+  bool ok = true;
+  for (int i = 0; i < 5; ++i) {
+    ok = sim.step().ok && ok;
+    sim.snapshot(s);
+  }
+  const long allocations = guard.stop();
+  EXPECT_TRUE(ok);
+  EXPECT_EQ(allocations, 0) << "heap allocations in 5 steps and snapshots";
+  EXPECT_GT(s.chain.limits.max_utilisation, 0.0);  // the limits were computed
+  EXPECT_EQ(s.chain.limits.bend_radius.size(), 8);
+}
+
 TEST(NoAllocation, SectionsAndAttachments) {
   // Per-link section properties, and attachments with drag (their own loop in the drag pass), in both
   // formulations and in a depth profile (the statics' and the dynamics' point-by-point path).

@@ -114,6 +114,52 @@ def test_an_elastic_chain_stretches_by_the_weight_below():
     assert s.link_ends[-1, 2] == pytest.approx(n * l + (far / ea * l).sum(), rel=1e-12)
 
 
+
+def test_the_limits_exist_and_equal_cable_sims_csv(tmp_path):
+    """The limits (cable.limits; docs/MODEL.md section 13) in the snapshot: each joint's bend radius and each
+    link's utilisation (numpy, n), the smallest radius and the largest utilisation with their links; equal
+    to the columns of cable_sim's CSV for the same config at the same instants (10 significant digits), the
+    straight start's infinite radii (`inf` in the CSV) included."""
+    config = tmp_path / "limits.yaml"
+    config.write_text(
+        "cable: {links: 8, length: 10.0, diameter: 0.025, mass_per_length: 0.6,\n"
+        "        stiffness: {model: bending, bending_rigidity: 50.0},\n"
+        "        limits: {max_tension: 30.0, min_bend_radius: 5.0}}\n"
+        "load: {mass: 2.0, volume: 0.0005}\n"
+        "fluid: {density: 1025.0, current: [0.8, 0.0, 0.0]}\n"
+        "simulation: {integrator: implicit, dt: 0.01}\n")
+    out = tmp_path / "run.csv"
+    done = subprocess.run([required_env("CABLE_SIM_BIN"), "--config", str(config), "--output", str(out),
+                           "--duration", "1.0", "--sample", "0.5"], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    with open(out) as f:
+        header = f.readline().strip().split(",")
+    data = np.loadtxt(out, delimiter=",", skiprows=1, ndmin=2)
+    csv = {name: data[:, i] for i, name in enumerate(header)}
+    n = 8
+    sim = cable_dynamics.Simulator.from_file(str(config))
+    for row in range(3):  # t = 0, 0.5, 1.0 s
+        if row:
+            sim.step(50)
+        s = sim.snapshot()
+        assert s.time == pytest.approx(csv["time"][row], abs=1e-12)
+        assert s.bend_radius.shape == (n,) and s.utilisation.shape == (n,)
+        radius = np.array([csv[f"bend_radius{k}"][row] for k in range(1, n + 1)])
+        used = np.array([csv[f"utilisation{k}"][row] for k in range(1, n + 1)])
+        np.testing.assert_allclose(s.bend_radius, radius, rtol=1e-9)
+        np.testing.assert_allclose(s.utilisation, used, rtol=1e-9)
+        assert s.min_bend_radius == pytest.approx(csv["min_bend_radius"][row], rel=1e-9)
+        assert s.max_utilisation == pytest.approx(csv["max_utilisation"][row], rel=1e-9)
+        assert 0 <= s.min_bend_radius_link < n and 0 <= s.max_utilisation_link < n
+        assert s.max_utilisation == s.utilisation[s.max_utilisation_link]
+        assert s.seabed_clearance == math.inf  # no seabed
+        if row == 0:  # the straight start: every joint straight, only the tension uses the cable
+            assert np.all(np.isinf(radius)) and math.isinf(s.min_bend_radius)
+            np.testing.assert_allclose(s.utilisation, s.tension / 30.0, rtol=1e-12)
+    # In the current it bends: finite radii, the bend limit in the utilisation.
+    assert np.all(np.isfinite(s.bend_radius)) and s.min_bend_radius < math.inf
+    assert s.max_utilisation > 0.0
+
 # --- the seabed ------------------------------------------------------------------------------------
 
 def test_a_chain_on_the_seabed_rests_its_weight_on_it():

@@ -58,6 +58,9 @@ catkin_add_gtest(test_axial_elasticity test/test_axial_elasticity.cpp)
 target_link_libraries(test_axial_elasticity cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 catkin_add_gtest(test_end_fixity test/test_end_fixity.cpp)
 target_link_libraries(test_end_fixity cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+# The limits: bend radius against a circular arc, utilisation, clearance, the keys' refusals.
+catkin_add_gtest(test_cable_limits test/test_cable_limits.cpp)
+target_link_libraries(test_cable_limits cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
 catkin_add_gtest(test_statics test/test_statics.cpp)
 target_link_libraries(test_statics cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

@@ -28,6 +28,7 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/dynamics/energies.cpp
   ${CABLE_CORE_DIR}/src/dynamics/articulated_body.cpp
   ${CABLE_CORE_DIR}/src/dynamics/dense_solver.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/cable_limits.cpp
   ${CABLE_CORE_DIR}/src/dynamics/rov_body.cpp
   ${CABLE_CORE_DIR}/src/dynamics/stiff_articulated_body.cpp
   # dynamics/forces: each force's value, power, Jacobian and form at rest (most are header-only), and the

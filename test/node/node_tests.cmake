@@ -56,6 +56,9 @@ add_dependencies(test_winch_node cable_msgs_generate_messages_cpp cable_dynamics
 # The winch's node parts (guard, range check, shaping without allocation, the new fields), no roscore.
 catkin_add_gtest(test_node_winch_parts test/node/test_node_winch_parts.cpp)
 target_link_libraries(test_node_winch_parts cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})
+# Issue 25: the limits in cable_state, /diagnostics and the rviz tube.
+catkin_add_gtest(test_node_limits_parts test/node/test_node_limits_parts.cpp)
+target_link_libraries(test_node_limits_parts cable_dynamics_ros ${GTEST_MAIN_LIBRARIES})
 # The ends as bodies: a rolled vessel's hang-off point, a rotated ROV's attachment, their wrenches.
 add_rostest_gtest(test_body_poses test/body_poses.test test/node/test_body_poses.cpp)
 target_include_directories(test_body_poses PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS})

@@ -146,8 +146,9 @@ TEST(WinchOutputs, PreparedForTheConfiguredDeploymentWithNamesPerSlot) {
                  prefixed(), "world", plain);
   EXPECT_EQ(plain.joints.name.size(), 9u);
   EXPECT_EQ(plain.transforms.size(), 11u);
-  EXPECT_EQ(plain.diagnostics.status[0].values.size(), 13u);
-  EXPECT_EQ(o.diagnostics.status[0].values.size(), 20u);
+  // 13 values, the winch's 7 with a winch, and the limits' 3 last.
+  EXPECT_EQ(plain.diagnostics.status[0].values.size(), 16u);
+  EXPECT_EQ(o.diagnostics.status[0].values.size(), 23u);
 }
 
 TEST(WinchOutputs, ShapingMovesNamesBetweenTheMessagesAndTheDrumWithoutAllocating) {
@@ -258,7 +259,7 @@ TEST(WinchOutputs, FilledFromASimulatorThatPaysOutAndHaulsIn) {
     EXPECT_NEAR(line.points.front().z, 0.0, 1e-12);
     // The winch's diagnostics.
     const auto& values = o.diagnostics.status[0].values;
-    ASSERT_EQ(values.size(), 20u);
+    ASSERT_EQ(values.size(), 23u);  // 13, the winch's 7, the limits' 3
     EXPECT_EQ(values[13].key, "deployed length [m]");
     EXPECT_NEAR(std::stod(values[13].value), sim.deployedLength(), 1e-5 * sim.deployedLength());
     EXPECT_EQ(std::stoi(values[14].value), deployed);

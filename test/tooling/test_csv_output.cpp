@@ -78,12 +78,24 @@ SimulationSnapshot snapshotOf(int n, const std::vector<double>& v) {
   s.chain.seabed.touchdown_arc_length = v[i++];
   for (int c = 0; c < 3; ++c) s.chain.seabed.touchdown(c) = v[i++];
   s.chain.seabed.max_penetration = v[i++];
+  // The limits, last: n bend radii, n utilisations, the smallest radius and the largest utilisation.
+  LimitReport& limits = s.chain.limits;
+  limits.bend_radius.resize(n);
+  limits.utilisation.resize(n);
+  for (int k = 0; k < n; ++k) limits.bend_radius(k) = v[i++];
+  for (int k = 0; k < n; ++k) limits.utilisation(k) = v[i++];
+  limits.min_bend_radius = v[i++];
+  limits.max_utilisation = v[i++];
   EXPECT_EQ(i, v.size());
   return s;
 }
 
-/// The deployed_links value of a row of values (a count: set it to one), 8 from the end.
-double& deployedLinks(std::vector<double>& v) { return v[v.size() - 8]; }
+/// The deployed_links value of a row of values of csvColumns(n) (a count: set it to one): the 19th
+/// scalar after time and the 10n per-link values; a row has 12n + 29 values.
+double& deployedLinks(std::vector<double>& v) {
+  const std::size_t n = (v.size() - 29) / 12;
+  return v[10 * n + 19];
+}
 
 /// Values that probe the formatting: zeros of both signs, powers of ten around the switch between fixed
 /// and exponent notation, rounding at the 10th digit, the extremes of a double, and random magnitudes.
@@ -105,7 +117,8 @@ TEST(CsvOutput, NumbersAsTheStreamWroteThem) {
   // 200 rows of n = 100 (1027 values each, about 200,000 numbers), compared with the stream's text.
   const int n = 100;
   const std::size_t per_row = csvColumns(n).size();
-  ASSERT_EQ(per_row, 1 + 10 * n + 26u);  // time, 3n q, 3n rates, 3n ends, n tensions, 26 scalars
+  // time, 3n q, 3n rates, 3n ends, n tensions, 26 scalars, then n bend radii, n utilisations and 2 scalars
+  ASSERT_EQ(per_row, 1 + 12 * n + 28u);
   for (unsigned seed = 1; seed <= 200; ++seed) {
     std::vector<double> v = probeValues(per_row, seed);
     deployedLinks(v) = 37;  // deployed_links: a count
@@ -135,14 +148,35 @@ TEST(CsvOutput, HeaderNamesEveryColumn) {
             "top_tension,load_force_x,load_force_y,load_force_z,base_force_x,base_force_y,base_force_z,"
             "kinetic_energy,potential_energy,elastic_energy,dissipated_energy,work_input,total_energy,base_x,base_y,"
             "base_z,deployed_length,winch_speed,deployed_links,contact_energy,grounded_length,touchdown_arc_length,"
-            "touchdown_x,touchdown_y,touchdown_z,max_penetration\n");
+            "touchdown_x,touchdown_y,touchdown_z,max_penetration,bend_radius1,bend_radius2,utilisation1,utilisation2,"
+            "min_bend_radius,max_utilisation\n");
+}
+
+TEST(CsvOutput, AStraightJointsBendRadiusIsWrittenAsInf) {
+  // A straight joint's bend radius is +inf (dynamics/cable_limits.h): written `inf`, which numpy's loadtxt
+  // and std::strtod read back; NaN and -inf there still refuse the row.
+  const int n = 2;
+  std::vector<double> v(csvColumns(n).size(), 1.5);
+  deployedLinks(v) = 2;
+  const std::size_t radius = v.size() - 2 * n - 2, smallest = v.size() - 2;  // bend_radius1, min_bend_radius
+  v[radius] = v[smallest] = std::numeric_limits<double>::infinity();
+  std::ostringstream out;
+  CsvWriter writer(out, n);
+  ASSERT_TRUE(writer.writeRow(snapshotOf(n, v)));
+  ASSERT_TRUE(writer.flush());
+  EXPECT_EQ(out.str().substr(out.str().size() - std::string(",inf,1.5,1.5,1.5,inf,1.5\n").size()), ",inf,1.5,1.5,1.5,inf,1.5\n");
+  EXPECT_EQ(std::strtod("inf", nullptr), std::numeric_limits<double>::infinity());
+  for (double bad : {std::nan(""), -std::numeric_limits<double>::infinity()}) {
+    v[radius] = bad;
+    EXPECT_FALSE(writer.writeRow(snapshotOf(n, v))) << bad;
+  }
 }
 
 TEST(CsvOutput, NonFiniteRowWritesNothing) {
   const int n = 3;
   const std::size_t per_row = csvColumns(n).size();
   for (double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
-    for (std::size_t at : {std::size_t{0}, per_row / 2, per_row - 2}) {
+    for (std::size_t at : {std::size_t{0}, per_row / 2, per_row - 1}) {
       std::vector<double> v(per_row, 1.5);
       deployedLinks(v) = 3;
       std::ostringstream out;
@@ -241,9 +275,11 @@ TEST(CsvOutput, ASeabedsCsvEndsWithTheNormalForcePerLink) {
   }
   const std::string text = out.str();
   const std::string header = text.substr(0, text.find('\n'));
-  EXPECT_NE(header.find(",max_penetration,seabed_normal1,seabed_normal2,seabed_normal3"), std::string::npos);
+  EXPECT_NE(header.find(",max_penetration,seabed_normal1,seabed_normal2,seabed_normal3,bend_radius1"), std::string::npos);
   const std::string row = text.substr(text.find('\n') + 1);
-  EXPECT_EQ(row.substr(row.size() - std::string(",1.5,0,12.5,-0.25\n").size()), ",1.5,0,12.5,-0.25\n");
+  // The normal forces, then the limits' 2n + 2 values (all 1.5 here).
+  const std::string tail = ",1.5,0,12.5,-0.25,1.5,1.5,1.5,1.5,1.5,1.5,1.5,1.5\n";
+  EXPECT_EQ(row.substr(row.size() - tail.size()), tail);
   EXPECT_EQ(csvColumns(n, true).size(), csvColumns(n).size() + n);
 }
 

@@ -81,7 +81,17 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
       .def_readonly("strain", &Snapshot::strain, "(n) each link's strain, axial elasticity only (else empty) [-]")
       .def_readonly("stretched_length", &Snapshot::stretched_length, "(n) each link's stretched length [m] (else empty)")
       .def_readonly("far_tension", &Snapshot::far_tension, "(n) the tension at each link's far end [N] (else empty)")
-      .def_readonly("slack_links", &Snapshot::slack_links, "links whose stretch carries no tension");
+      .def_readonly("slack_links", &Snapshot::slack_links, "links whose stretch carries no tension")
+      .def_readonly("bend_radius", &Snapshot::bend_radius,
+                    "(n) joint k's bend radius, links k-1 and k (joint 0: against the base's clamp) [m]; inf straight")
+      .def_readonly("utilisation", &Snapshot::utilisation,
+                    "(n) each link's utilisation: max(tension / max_tension, min_bend_radius / its bend radius) [-]")
+      .def_readonly("min_bend_radius", &Snapshot::min_bend_radius, "the smallest link bend radius [m] (inf straight)")
+      .def_readonly("min_bend_radius_link", &Snapshot::min_bend_radius_link, "its link (0-based)")
+      .def_readonly("max_utilisation", &Snapshot::max_utilisation, "the largest utilisation [-]; 1 = at a limit")
+      .def_readonly("max_utilisation_link", &Snapshot::max_utilisation_link, "its link (0-based)")
+      .def_readonly("seabed_clearance", &Snapshot::seabed_clearance,
+                    "the smallest height of a suspended link end above the bottom [m] (inf without a seabed)");
 
   py::class_<ModelTerms>(m, "Model", "M q'' + h + G + elastic + D q' = Q at one state (paper coordinates).")
       .def_readonly("coordinates", &ModelTerms::coordinates, "(3n) names, joint_K_elevation/azimuth/torsion")

@@ -124,6 +124,14 @@ Snapshot PythonSimulator::toPython(const SimulationSnapshot& s) const {
                                                     : Eigen::VectorXd();
   out.far_tension = s.chain.far_tension;
   out.slack_links = s.chain.slack_links;
+  const LimitReport& limits = s.chain.limits;
+  out.bend_radius = limits.bend_radius;
+  out.utilisation = limits.utilisation;
+  out.min_bend_radius = limits.min_bend_radius;
+  out.min_bend_radius_link = limits.min_bend_radius_link;
+  out.max_utilisation = limits.max_utilisation;
+  out.max_utilisation_link = limits.max_utilisation_link;
+  out.seabed_clearance = limits.seabed_clearance;
   return out;
 }
 

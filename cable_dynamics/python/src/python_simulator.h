@@ -45,6 +45,12 @@ struct Snapshot {
   /// stretched length [m], the tension at its far end [N], and how many links are slack.
   Eigen::VectorXd strain, stretched_length, far_tension;
   int slack_links = 0;
+  /// The limits (cable.limits; dynamics/cable_limits.h): each joint's bend radius [m] (+inf straight),
+  /// each link's utilisation [-], the smallest bend radius [m] and its link, the largest utilisation [-]
+  /// and its link (0-based), and the seabed clearance [m] (+inf without a seabed).
+  Eigen::VectorXd bend_radius, utilisation;
+  double min_bend_radius = 0.0, max_utilisation = 0.0, seabed_clearance = 0.0;
+  int min_bend_radius_link = 0, max_utilisation_link = 0;
 };
 
 /// The paper model's terms at the present state (paperModelAt), sizes 3n and 3n x 3n.

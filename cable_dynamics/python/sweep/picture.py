@@ -1,6 +1,6 @@
 """DIR/summary.png: the largest utilisation over the first two axes as a heat map, failed cases marked.
 
-Until the limits land in the model (issue 25 item 2) no case has a utilisation, and the map shows the
+When no case has a utilisation (no `cable.limits` in the config: every utilisation is 0) the map shows the
 largest link tension [N] instead (its colour bar says which). A cell holds the largest value over the
 cases that share its two values (the other axes and the random draws); a cell with a failed case is
 framed in red with the count of failures. Matplotlib with the Agg backend: no display needed."""

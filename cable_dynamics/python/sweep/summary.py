@@ -59,18 +59,16 @@ class Summary:
 
 
 class _Limits:
-    """The bend radius and the utilisation (issue 25 item 2, built on another branch). Until the Snapshot
-    has `min_bend_radius` and `max_utilisation`, these three columns are left empty (hasattr below); when
-    both branches are merged this becomes unconditional."""
+    """The bend radius and the utilisation (cable.limits, docs/MODEL.md section 13), from the Snapshot's
+    `min_bend_radius` (inf while every joint is straight), `min_bend_radius_link` (0-based: reported 1 at the
+    base, as max_tension_link) and `max_utilisation` (0 without limits)."""
 
     def __init__(self):
         self.min_bend_radius, self.min_bend_radius_link, self.max_utilisation = None, None, None
 
     def add(self, s):
-        if not hasattr(s, "min_bend_radius"):
-            return
         if self.min_bend_radius is None or s.min_bend_radius < self.min_bend_radius:
-            self.min_bend_radius, self.min_bend_radius_link = float(s.min_bend_radius), int(s.min_bend_radius_link)
+            self.min_bend_radius, self.min_bend_radius_link = float(s.min_bend_radius), int(s.min_bend_radius_link) + 1
         if self.max_utilisation is None or s.max_utilisation > self.max_utilisation:
             self.max_utilisation = float(s.max_utilisation)
 

@@ -477,10 +477,11 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
   status_.slack_links = static_cast<unsigned>(source_.snapshot.chain.slack_links);
   status_.snaps = static_cast<unsigned>(source_.snapshot.snaps);
   status_.largest_tension = source_.snapshot.largest_tension;
+  updateLimitStatus(source_.snapshot, status_.limits);  // counts this cycle when a limit is exceeded
   shapeOutputs(source_.snapshot.first_link, outputs_);  // the deployed links only; no allocation
   fillJointState(source_, stamp, outputs_.joints);
   fillTransforms(source_, options_.base_position, stamp, outputs_.transforms);
-  fillMarkers(source_, params_.totalLength(), scale, stamp, outputs_.markers);
+  fillMarkers(source_, params_.totalLength(), scale, stamp, outputs_.markers, options_.colour_by);
   fillCableState(source_, status_, stamp, outputs_.state);
   fillWrenches(source_, options_.base_position, stamp, outputs_);
   const bool attached = params_.load.mode == LoadMode::kAttached;

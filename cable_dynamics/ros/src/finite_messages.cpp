@@ -55,7 +55,8 @@ bool allFinite(const cable_msgs::CableState& msg) {
          std::isfinite(msg.deployed_length) && std::isfinite(msg.line_pull) && std::isfinite(msg.winch_speed) &&
          std::isfinite(msg.grounded_length) && std::isfinite(msg.touchdown_arc_length) && finite(msg.touchdown) &&
          std::isfinite(msg.max_penetration) && std::isfinite(msg.contact_energy) && finite(msg.seabed_force) &&
-         finite(msg.strain) && std::isfinite(msg.max_tension);
+         finite(msg.strain) && std::isfinite(msg.max_tension) && finite(msg.bend_radius) && finite(msg.utilisation) &&
+         std::isfinite(msg.max_utilisation) && std::isfinite(msg.min_bend_radius);
 }
 
 bool allFinite(const geometry_msgs::WrenchStamped& msg) {
@@ -67,7 +68,9 @@ bool allFinite(const NodeStatus& s) {
          std::isfinite(s.dropped_time) && std::isfinite(s.real_time_factor) && std::isfinite(s.loop_rate) &&
          std::isfinite(s.retried_share) && std::isfinite(s.winch.deployed_length) && std::isfinite(s.winch.speed) &&
          std::isfinite(s.winch.line_pull) && std::isfinite(s.winch.commanded_speed) &&
-         std::isfinite(s.winch.target_length);
+         std::isfinite(s.winch.target_length) && std::isfinite(s.limits.max_utilisation) &&
+         std::isfinite(s.limits.min_bend_radius) && std::isfinite(s.limits.tension_utilisation) &&
+         std::isfinite(s.limits.bend_utilisation) && std::isfinite(s.limits.seabed_clearance);
 }
 
 bool allFinite(const CableOutputs& o) {

@@ -63,9 +63,15 @@ const char* const kWinchKeys[] = {"deployed length [m]", "deployed links", "winc
                                   "winch command",       "links added",    "links removed"};
 constexpr int kWinchCount = sizeof(kWinchKeys) / sizeof(kWinchKeys[0]);
 constexpr int kWinchCommandKey = 4;
-/// With axial elasticity, these come last.
+/// With axial elasticity, these come next.
 const char* const kAxialKeys[] = {"slack links", "snaps", "largest tension [N]"};
 constexpr int kAxialCount = sizeof(kAxialKeys) / sizeof(kAxialKeys[0]);
+/// The limits (cable.limits), always last.
+const char* const kLimitKeys[] = {"max utilisation", "min bend radius [m]", "cycles over a limit"};
+constexpr int kLimitCount = sizeof(kLimitKeys) / sizeof(kLimitKeys[0]);
+
+/// A radius as published: finite, at most kPublishedStraightRadius [m].
+double publishedRadius(double radius) { return std::min(radius, kPublishedStraightRadius); }
 
 /// Moves the `count` entries of `from` starting at `at` to the end of `to` and erases them from `from`;
 /// within the capacity of `to`, no allocation (moved strings keep their buffers).
@@ -160,6 +166,9 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   out.state.tension.assign(n, 0.0);
   out.state.seabed_force.assign(params.seabed.enabled ? n : 0, 0.0);
   out.state.strain.assign(params.stretches() ? n : 0, 0.0);
+  out.state.bend_radius.assign(n, kPublishedStraightRadius);
+  out.state.utilisation.assign(n, 0.0);
+  out.state.min_bend_radius = kPublishedStraightRadius;
   out.state.axial = params.stretches();
   out.state.deployed_links = static_cast<uint32_t>(n);
   out.state.header.frame_id = world_frame;
@@ -177,7 +186,7 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   status.name = "cable_dynamics: " + (names.prefix.empty() ? std::string("cable") : names.prefix);
   status.hardware_id = names.paper();
   const bool winch = params.winch.enabled, axial = params.stretches();
-  status.values.resize(kDiagnosticCount + (winch ? kWinchCount : 0) + (axial ? kAxialCount : 0));
+  status.values.resize(kDiagnosticCount + (winch ? kWinchCount : 0) + (axial ? kAxialCount : 0) + kLimitCount);
   for (int i = 0; i < kDiagnosticCount; ++i) {
     status.values[i].key = kDiagnosticKeys[i];
     status.values[i].value.reserve(32);
@@ -186,10 +195,15 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
     status.values[kDiagnosticCount + i].key = kWinchKeys[i];
     status.values[kDiagnosticCount + i].value.reserve(64);
   }
-  for (int i = 0, first = static_cast<int>(status.values.size()) - kAxialCount; axial && i < kAxialCount; ++i) {
+  for (int i = 0, first = static_cast<int>(status.values.size()) - kLimitCount - kAxialCount; axial && i < kAxialCount; ++i) {
     status.values[first + i].key = kAxialKeys[i];
     status.values[first + i].value.reserve(32);
   }
+  for (int i = 0, first = static_cast<int>(status.values.size()) - kLimitCount; i < kLimitCount; ++i) {
+    status.values[first + i].key = kLimitKeys[i];
+    status.values[first + i].value.reserve(32);
+  }
+  status.message.reserve(256);  // the limits' message names the limits and links
 
   // Everything is sized for every slot; the drum's entries are moved aside.
   out.slots = n;
@@ -272,15 +286,18 @@ constexpr float kOverviewLineAlpha = 0.45f;
 }  // namespace
 
 void fillMarkers(const OutputSource& source, double total_length, double tension_scale, const ros::Time& stamp,
-                 visualization_msgs::MarkerArray& msg) {
+                 visualization_msgs::MarkerArray& msg, MarkerColour colour_by) {
   const ChainOutputs& c = source.snapshot.chain;
   const int n = static_cast<int>(c.tension.size()), first = source.snapshot.first_link;
+  const bool by_utilisation = colour_by == MarkerColour::kUtilisation;
   // The line runs over the deployed links only (one marker, replaced each cycle: a link hauled in leaves
   // nothing behind in rviz).
   visualization_msgs::Marker& line = msg.markers[kCableLine];
   for (int k = first; k <= n; ++k) {
+    const int link = std::min(k, n - 1);
     setPoint(line.points[k - first], c.ends.col(k));
-    line.colors[k - first] = tensionColor(c.tension(std::min(k, n - 1)), tension_scale);
+    line.colors[k - first] = by_utilisation ? utilisationColor(c.limits.utilisation(link))
+                                            : tensionColor(c.tension(link), tension_scale);
     line.colors[k - first].a = kOverviewLineAlpha;
   }
   msg.markers[kLoadSphere].pose.position = line.points[n - first];
@@ -291,13 +308,18 @@ void fillMarkers(const OutputSource& source, double total_length, double tension
   setPoint(msg.markers[kLoadArrow].points[0], tip);
   setPoint(msg.markers[kLoadArrow].points[1], tip + arrow_per_newton * c.load_force);
   char text[160];
-  std::snprintf(text, sizeof(text), "tension: blue 0 N, green %.0f N, red %.0f N  (top %.1f N)", 0.5 * tension_scale,
-                tension_scale, source.snapshot.line_pull);
+  if (by_utilisation) {
+    std::snprintf(text, sizeof(text), "utilisation: blue 0, green 0.5, red 1 = a limit  (largest %.2f, link %d)",
+                  c.limits.max_utilisation, c.limits.max_utilisation_link + 1);
+  } else {
+    std::snprintf(text, sizeof(text), "tension: blue 0 N, green %.0f N, red %.0f N  (top %.1f N)", 0.5 * tension_scale,
+                  tension_scale, source.snapshot.line_pull);
+  }
   visualization_msgs::Marker& label = msg.markers[kScaleText];
   label.text = text;
   label.pose.position.x = c.ends(0, first) - 0.3 * total_length;
   label.pose.position.z = c.ends(2, first) + 0.1 * total_length;
-  fillTubeMarkers(source, tension_scale, &msg.markers[kTubeFirst]);
+  fillTubeMarkers(source, tension_scale, &msg.markers[kTubeFirst], colour_by == MarkerColour::kUtilisation);
   for (auto& m : msg.markers) m.header.stamp = stamp;
 }
 
@@ -350,6 +372,29 @@ void fillCableState(const OutputSource& source, const NodeStatus& status, const 
   msg.slack_links = static_cast<uint32_t>(c.slack_links);
   msg.max_tension = s.largest_tension;
   msg.snaps = static_cast<uint32_t>(s.snaps);
+  const LimitReport& limits = c.limits;
+  for (std::size_t k = 0; k < msg.bend_radius.size() && k < static_cast<std::size_t>(limits.bend_radius.size()); ++k) {
+    msg.bend_radius[k] = publishedRadius(limits.bend_radius(k));
+    msg.utilisation[k] = limits.utilisation(k);
+  }
+  msg.max_utilisation = limits.max_utilisation;
+  msg.min_bend_radius = publishedRadius(limits.min_bend_radius);
+}
+
+void updateLimitStatus(const SimulationSnapshot& snapshot, LimitStatus& status) {
+  const LimitReport& r = snapshot.chain.limits;
+  status.tension = r.tension_exceeded;
+  status.bend = r.bend_exceeded;
+  status.clearance = r.clearance_exceeded;
+  status.tension_link = r.max_tension_utilisation_link;
+  status.bend_link = r.max_bend_utilisation_link;
+  status.clearance_link = r.seabed_clearance_link;
+  status.tension_utilisation = r.max_tension_utilisation;
+  status.bend_utilisation = r.max_bend_utilisation;
+  status.max_utilisation = r.max_utilisation;
+  status.min_bend_radius = publishedRadius(r.min_bend_radius);
+  status.seabed_clearance = publishedRadius(r.seabed_clearance);
+  if (status.exceeded()) ++status.cycles_in_excess;
 }
 
 void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
@@ -386,6 +431,21 @@ unsigned char diagnosticLevel(const NodeStatus& s, std::string& message) {
     message = "cannot keep up with the clock: simulated time dropped (lag above ros.max_lag)";
     return DiagnosticStatus::ERROR;
   }
+  if (s.limits.exceeded()) {
+    // Names each limit exceeded and its link (link K = slot K - 1, as the TF frames link_K); no allocation
+    // beyond the message's reserved capacity.
+    const LimitStatus& l = s.limits;
+    char text[256];
+    int used = std::snprintf(text, sizeof(text), "limit exceeded (%u cycles so far):", l.cycles_in_excess);
+    const auto add = [&](const char* format, double a, double b) {
+      if (used < static_cast<int>(sizeof(text))) used += std::snprintf(text + used, sizeof(text) - used, format, a, b);
+    };
+    if (l.tension) add(" tension on link %.0f (utilisation %.3g);", l.tension_link + 1.0, l.tension_utilisation);
+    if (l.bend) add(" bend on link %.0f (utilisation %.3g);", l.bend_link + 1.0, l.bend_utilisation);
+    if (l.clearance) add(" seabed clearance at link %.0f (%.3g m);", l.clearance_link + 1.0, l.seabed_clearance);
+    message = text;
+    return DiagnosticStatus::WARN;
+  }
   if (s.energy_error > kEnergyErrorWarning) {
     message = "the energy balance rose or drifted beyond 1 % of its scale: simulation.dt is too large for this cable";
     return DiagnosticStatus::WARN;
@@ -411,7 +471,10 @@ void fillDiagnostics(const NodeStatus& s, const ros::Time& stamp, diagnostic_msg
                                            double(s.rejected), double(s.stale),    double(s.diverged),
                                            double(s.retried),  s.retried_share,    s.energy_error};
   for (int i = 0; i < kDiagnosticCount; ++i) format(status.values[i].value, i >= 6 && i <= 10 ? "%.0f" : "%.6g", values[i]);
-  const int last = static_cast<int>(status.values.size());
+  const int last = static_cast<int>(status.values.size()) - kLimitCount;  // the axial keys end before the limits'
+  const double limit_values[kLimitCount] = {s.limits.max_utilisation, s.limits.min_bend_radius,
+                                            double(s.limits.cycles_in_excess)};
+  for (int i = 0; i < kLimitCount; ++i) format(status.values[last + i].value, i == 2 ? "%.0f" : "%.6g", limit_values[i]);
   if (last >= kDiagnosticCount + kAxialCount && status.values[last - kAxialCount].key == kAxialKeys[0]) {
     const double axial_values[kAxialCount] = {double(s.slack_links), double(s.snaps), s.largest_tension};
     for (int i = 0; i < kAxialCount; ++i) format(status.values[last - kAxialCount + i].value, i < 2 ? "%.0f" : "%.6g", axial_values[i]);

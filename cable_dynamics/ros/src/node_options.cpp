@@ -38,6 +38,12 @@ NodeOptions parseNodeOptions(const YAML::Node& ros_section, const std::string& d
   o.max_steps_per_cycle = ros.integer("max_steps_per_cycle", o.max_steps_per_cycle, 1, 10000000, false);
   o.max_lag = ros.number("max_lag", o.max_lag, 0.01, 3600.0, false, "s");
   o.tension_scale = ros.number("tension_scale", o.tension_scale, 0.0, 1e9, false, "N");
+  if (ros.has("markers")) {
+    ConfigSection markers = ros.sub("markers");
+    o.colour_by = markers.choice("colour_by", "tension", {"tension", "utilisation"}) == "tension" ? MarkerColour::kTension
+                                                                                              : MarkerColour::kUtilisation;
+    markers.rejectUnknownKeys();
+  }
   o.diagnostics_period = ros.number("diagnostics_period", o.diagnostics_period, 0.01, 3600.0, false, "s");
   o.min_rov_mass = ros.number("min_rov_mass", o.min_rov_mass, 0.0, 1e6, false, "kg");
   // The rviz shapes of the two bodies (scene_markers.h): drawing only.

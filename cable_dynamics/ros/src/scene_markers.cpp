@@ -120,7 +120,8 @@ void prepareTubeMarkers(const CableParams& params, const std::string& paper_fram
   }
 }
 
-void fillTubeMarkers(const OutputSource& source, double tension_scale, visualization_msgs::Marker* markers) {
+void fillTubeMarkers(const OutputSource& source, double tension_scale, visualization_msgs::Marker* markers,
+                     bool by_utilisation) {
   const ChainOutputs& c = source.snapshot.chain;
   const int n = static_cast<int>(c.tension.size()), first = source.snapshot.first_link;
   for (int k = 0; k < n; ++k) {
@@ -134,7 +135,7 @@ void fillTubeMarkers(const OutputSource& source, double tension_scale, visualiza
     setPoint(m.pose.position, 0.5 * (c.ends.col(k) + c.ends.col(k + 1)));
     setOrientation(m.pose.orientation, source.links[k].orientation);
     m.scale.z = (c.ends.col(k + 1) - c.ends.col(k)).norm();  // the base link's changes with a winch [m]
-    m.color = tensionColor(c.tension(k), tension_scale);
+    m.color = by_utilisation ? utilisationColor(c.limits.utilisation(k)) : tensionColor(c.tension(k), tension_scale);
   }
 }
 

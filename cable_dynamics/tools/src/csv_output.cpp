@@ -13,15 +13,17 @@ namespace {
 constexpr std::size_t kMaxNumberChars = 24;
 
 /// Values per row for n links: time, 3n coordinates, 3n rates, 3n ends, n tensions, 26 scalars, with
-/// a seabed n normal forces, and with axial elasticity n strains and the count of slack links.
+/// a seabed n normal forces, with axial elasticity n strains and the count of slack links, and last n bend
+/// radii, n utilisations and 2 limit scalars.
 std::size_t valuesPerRow(int links, bool seabed, bool axial) {
-  return 1 + (seabed ? 11 : 10) * static_cast<std::size_t>(links) + 26 + (axial ? links + 1 : 0);
+  return 1 + (seabed ? 13 : 12) * static_cast<std::size_t>(links) + 28 + (axial ? links + 1 : 0);
 }
 
-/// Calls `visit(value)` for every value of a row, in the columns' order (csvColumns); stops at the first
-/// call that returns false and returns false then.
-template <class Visit>
-bool forEachValue(const SimulationSnapshot& s, bool seabed, bool axial, Visit&& visit) {
+/// Calls `visit(value)` for every value of a row, in the columns' order (csvColumns), and
+/// `visit_radius(value)` for the bend radii (+inf where straight); stops at the first call that returns
+/// false and returns false then.
+template <class Visit, class VisitRadius>
+bool forEachValue(const SimulationSnapshot& s, bool seabed, bool axial, Visit&& visit, VisitRadius&& visit_radius) {
   const int n = static_cast<int>(s.q.size()) / 3;
   if (!visit(s.time)) return false;
   for (int i = 0; i < 3 * n; ++i) {
@@ -66,7 +68,16 @@ bool forEachValue(const SimulationSnapshot& s, bool seabed, bool axial, Visit&& 
     }
     if (!visit(static_cast<double>(s.chain.slack_links))) return false;
   }
-  return true;
+  // The limits (dynamics/cable_limits.h): each joint's bend radius, each link's utilisation, the smallest
+  // radius and the largest utilisation.
+  const LimitReport& limits = s.chain.limits;
+  for (int k = 0; k < n; ++k) {
+    if (!visit_radius(k < limits.bend_radius.size() ? limits.bend_radius(k) : LimitReport::kStraight)) return false;
+  }
+  for (int k = 0; k < n; ++k) {
+    if (!visit(k < limits.utilisation.size() ? limits.utilisation(k) : 0.0)) return false;
+  }
+  return visit_radius(limits.min_bend_radius) && visit(limits.max_utilisation);
 }
 
 }  // namespace
@@ -93,11 +104,18 @@ std::vector<std::string> csvColumns(int links, bool seabed, bool axial) {
     for (int k = 1; k <= links; ++k) c.push_back("strain" + std::to_string(k));
     c.push_back("slack_links");
   }
+  for (int k = 1; k <= links; ++k) c.push_back("bend_radius" + std::to_string(k));
+  for (int k = 1; k <= links; ++k) c.push_back("utilisation" + std::to_string(k));
+  c.push_back("min_bend_radius");
+  c.push_back("max_utilisation");
   return c;
 }
 
 bool csvRowFinite(const SimulationSnapshot& s, bool seabed, bool axial) {
-  return forEachValue(s, seabed, axial, [](double x) { return std::isfinite(x); });
+  // A bend radius may be +inf (a straight joint, written `inf`); nothing else may be non-finite.
+  const auto finite = [](double x) { return std::isfinite(x); };
+  const auto radius = [](double x) { return std::isfinite(x) || x == LimitReport::kStraight; };
+  return forEachValue(s, seabed, axial, finite, radius);
 }
 
 CsvWriter::CsvWriter(std::ostream& out, int links, std::size_t flush_bytes, bool seabed, bool axial)
@@ -125,16 +143,17 @@ bool CsvWriter::writeRow(const SimulationSnapshot& s) {
     throw std::invalid_argument("CsvWriter: a snapshot of " + std::to_string(s.q.size() / 3) + " links for a CSV of " +
                                 std::to_string(links_));
   }
-  // Nothing of a row with a non-finite value is written: check first, then format (the check is a small
-  // fraction of the formatting).
+  // Nothing of a row with a non-finite value is written (a bend radius may be +inf: a straight joint,
+  // written `inf`): check first, then format (the check is a small fraction of the formatting).
   if (!csvRowFinite(s, seabed_, axial_)) return false;
   bool first = true;
-  forEachValue(s, seabed_, axial_, [&](double x) {
+  const auto write = [&](double x) {
     if (!first) append(',');
     first = false;
     append(x);
     return true;
-  });
+  };
+  forEachValue(s, seabed_, axial_, write, write);
   append('\n');
   if (used_ >= flush_bytes_) handOver();
   return true;

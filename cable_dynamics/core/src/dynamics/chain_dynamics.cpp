@@ -200,6 +200,8 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
     reportSeabedContact(model_, data_, out.seabed);
     out.contact_energy = out.seabed.energy;
   }
+  reportLimits(model_, data_, out.tension, out.load_force, model_.seabedContact().enabled() ? &out.seabed : nullptr,
+               out.limits);
   return true;
 }
 

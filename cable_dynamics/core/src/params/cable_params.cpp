@@ -32,6 +32,7 @@ static std::vector<SectionParams> effectiveSections(const CableParams& params) {
   s.drag_normal = params.fluid.drag_normal;
   s.drag_tangential = params.fluid.drag_tangential;
   s.added_mass = params.fluid.added_mass;
+  s.min_bend_radius = params.limits.min_bend_radius;
   return {s};
 }
 
@@ -56,6 +57,11 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
       start += p.length(k);
     }
   }
+  // The limits: each link's minimum bend radius is its section's (the drum's slots take the base section's).
+  p.min_bend_radius.resize(n);
+  for (int k = 0; k < n; ++k) p.min_bend_radius(k) = sections[p.section(k)].min_bend_radius;
+  p.max_tension = params.limits.max_tension;
+  p.min_seabed_clearance = params.limits.has_min_seabed_clearance ? params.limits.min_seabed_clearance : -1.0;
   p.radius.resize(n);
   p.mass.resize(n);
   p.submerged_mass.resize(n);
@@ -142,6 +148,8 @@ LinkProperties deriveLinkProperties(const CableParams& params) {
       (*v)(0) = 0.0;
     }
   }
+  p.clamped_base = k.model == StiffnessModel::kBending && params.base.fixity == BaseFixity::kClamped;
+  p.clamped_tip = params.load.fixity == TipFixity::kClamped;
   const Eigen::Vector3d& d = params.base.direction;  // world, z up
   p.clamp_axis = Eigen::Vector3d(d.x(), -d.y(), -d.z()).normalized();  // paper frame, z down
   p.clamp_twist = std::hypot(p.clamp_axis.x(), p.clamp_axis.y()) > 1e-12 ? std::atan2(p.clamp_axis.x(), p.clamp_axis.y()) : 0.0;

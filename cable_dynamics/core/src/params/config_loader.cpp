@@ -52,6 +52,18 @@ void parseCable(Section cable, CableParams& p, CableRest& rest) {
   }
   p.axial_stiffness = cable.number("axial_stiffness", 0.0, 0.0, 1e13, false, "N");
   p.axial_damping = cable.number("axial_damping", 0.0, 0.0, 1e13, false, "N s");
+  {
+    // Each limit, when given, must be positive (the clearance may be 0); absent: no limit.
+    Section limits = cable.sub("limits");
+    LimitParams& l = p.limits;
+    if (limits.has("max_tension")) l.max_tension = limits.number("max_tension", 0.0, 0.0, 1e12, true, "N");
+    if (limits.has("min_bend_radius")) l.min_bend_radius = limits.number("min_bend_radius", 0.0, 0.0, 1e5, true, "m");
+    l.has_min_seabed_clearance = limits.has("min_seabed_clearance");
+    if (l.has_min_seabed_clearance) {
+      l.min_seabed_clearance = limits.number("min_seabed_clearance", 0.0, 0.0, 1e5, false, "m");
+    }
+    limits.rejectUnknownKeys();
+  }
   if (cable.has("sections")) {
     rest.has_sections = true;
     rest.sections = cable.raw("sections");
@@ -250,6 +262,12 @@ void parseSections(const YAML::Node& rows, const CableRest& rest, CableParams& p
     s.drag_normal = row.number("drag_normal", p.fluid.drag_normal, 0.0, 100.0, false, "");
     s.drag_tangential = row.number("drag_tangential", p.fluid.drag_tangential, 0.0, 100.0, false, "");
     s.added_mass = row.number("added_mass", p.fluid.added_mass, 0.0, 100.0, false, "");
+    s.min_bend_radius = p.limits.min_bend_radius;  // the cable's unless the section has its own
+    {
+      Section limits = row.sub("limits");
+      if (limits.has("min_bend_radius")) s.min_bend_radius = limits.number("min_bend_radius", 0.0, 0.0, 1e5, true, "m");
+      limits.rejectUnknownKeys();
+    }
     row.rejectUnknownKeys();
     if (last && !row.has("length")) {
       if (!(total - sum > 1e-9 * total)) {

@@ -129,6 +129,11 @@ void checkConfigRules(const CableParams& p) {
                       "0 or equal to stiffness.elevation with model: bending (the bend spring is elevation)");
   }
   if (p.load.mode == LoadMode::kBody) checkRovBody(p);
+  if (p.limits.has_min_seabed_clearance && !p.seabed.enabled) {
+    // A clearance is a height above the bottom: without a seabed there is nothing to measure it from.
+    throw ConfigError("cable.limits.min_seabed_clearance", formatNumber(p.limits.min_seabed_clearance),
+                      "absent without a seabed (give seabed.depth, seabed.grid or seabed.grid_file)");
+  }
   if (p.load.fixity == TipFixity::kClamped && p.load.mode == LoadMode::kFree) {
     throw ConfigError("load.fixity", "clamped", "pinned with load.mode: free (a clamp needs an anchor or an ROV to hold it)");
   }

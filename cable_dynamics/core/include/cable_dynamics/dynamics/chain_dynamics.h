@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include "cable_dynamics/dynamics/cable_limits.h"
 #include "cable_dynamics/dynamics/chain_data.h"
 #include "cable_dynamics/dynamics/chain_model.h"
 #include "cable_dynamics/dynamics/state_layout.h"
@@ -47,6 +48,8 @@ struct ChainOutputs {
   double elastic_energy = 0.0;    ///< joint springs and the links' stretch [J]
   double contact_energy = 0.0;    ///< the seabed's contact springs [J]
   SeabedReport seabed;            ///< contact forces, grounded length, touchdown (with a seabed)
+  /// Bend radii, utilisation against cable.limits, seabed clearance (dynamics/cable_limits.h).
+  LimitReport limits;
 };
 
 /// The model of one cable and the workspace its evaluations write.

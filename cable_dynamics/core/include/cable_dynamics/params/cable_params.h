@@ -233,6 +233,19 @@ struct SectionParams {
   double drag_normal = 1.2;         ///< Morison C_n [-]
   double drag_tangential = 0.01;    ///< skin friction C_t [-]
   double added_mass = 1.0;          ///< added-mass coefficient C_a normal to the cable [-]
+  /// The section's minimum bend radius [m] (`cable.sections[i].limits.min_bend_radius`); 0: no bend limit.
+  /// Left out: the cable's (`cable.limits.min_bend_radius`).
+  double min_bend_radius = 0.0;
+};
+
+/// The engineering limits a design is checked against (`cable.limits`, docs/MODEL.md section 13). An
+/// absent limit is 0 (or has_min_seabed_clearance false) and contributes nothing to the utilisation.
+struct LimitParams {
+  double max_tension = 0.0;      ///< the safe working load [N]; 0: no tension limit
+  double min_bend_radius = 0.0;  ///< the cable's minimum bend radius [m] (sections may override); 0: none
+  /// The smallest height above the seabed a suspended link end may have [m] (needs a seabed).
+  bool has_min_seabed_clearance = false;
+  double min_seabed_clearance = 0.0;
 };
 
 /// A point attachment (`attachments`): a buoyancy module (float), a clump weight, a sensor, at arc length
@@ -296,6 +309,7 @@ struct CableParams {
   /// first (base) section's properties.
   std::vector<SectionParams> sections;
   std::vector<AttachmentParams> attachments;  ///< point attachments, by arc length
+  LimitParams limits;                         ///< safe working load, minimum bend radius, seabed clearance
   StiffnessParams stiffness;
   DampingParams damping;
   LoadParams load;
@@ -340,6 +354,10 @@ struct LinkProperties {
   Eigen::VectorXd axial_stiffness;     ///< (n) EA of the link's section [N]; all 0: rigid links
   double axial_damping = 0.0;          ///< internal axial damping [N s] (force per strain rate)
   Eigen::VectorXi section;             ///< (n) 0-based index of the link's section (0 without sections)
+  /// (n) the minimum bend radius of the link's section [m]; 0: no bend limit (docs/MODEL.md section 13)
+  Eigen::VectorXd min_bend_radius;
+  double max_tension = 0.0;            ///< safe working load [N]; 0: no tension limit
+  double min_seabed_clearance = -1.0;  ///< [m]; < 0: no clearance limit
   std::vector<LinkAttachment> attachments;  ///< by link, in the order of arc length
   Eigen::VectorXd stiffness_elevation; ///< (n) per joint [N m/rad]
   Eigen::VectorXd stiffness_azimuth;   ///< (n) [N m/rad]
@@ -356,6 +374,11 @@ struct LinkProperties {
   /// against this frame. (A pinned base has no springs or dampers at joint 1 instead.)
   Eigen::Vector3d clamp_axis = Eigen::Vector3d::UnitZ();
   double clamp_twist = 0.0;
+  /// The bend radius's ends (docs/MODEL.md section 13): the bending model with base.fixity clamped bends
+  /// link 1 against clamp_axis (joint 1 has a radius), and load.fixity clamped the last link against the
+  /// tip's clamp; otherwise the ends are free hinges (no bend there).
+  bool clamped_base = false;
+  bool clamped_tip = false;
   /// A clamped tip (LoadParams::fixity): the bend spring [N m/rad] and damper [N m s/rad] between the
   /// last link and the tip's clamp, and the clamp's axis at rest, paper frame (an attached ROV turns it).
   double tip_clamp_stiffness = 0.0;

@@ -60,6 +60,27 @@ struct WinchStatus {
   unsigned links_added = 0, links_removed = 0;
 };
 
+/// An infinite bend radius (a straight joint), and any above it, as cable_state and /diagnostics publish it
+/// (never a non-finite number) [m].
+constexpr double kPublishedStraightRadius = 1e9;
+
+/// The limits (cable.limits) as /diagnostics reports them: which is exceeded now and on which link, and the
+/// cycles published while one was.
+struct LimitStatus {
+  bool tension = false, bend = false, clearance = false;  ///< exceeded at the last published instant
+  int tension_link = 0, bend_link = 0, clearance_link = 0;  ///< 0-based slots (the message says link K = slot + 1)
+  double tension_utilisation = 0.0, bend_utilisation = 0.0;  ///< the largest of each [-]
+  double max_utilisation = 0.0;                              ///< [-]
+  double min_bend_radius = kPublishedStraightRadius;         ///< [m], at most kPublishedStraightRadius
+  double seabed_clearance = kPublishedStraightRadius;        ///< [m], at most that too
+  unsigned cycles_in_excess = 0;  ///< published cycles with a limit exceeded, since start
+  bool exceeded() const { return tension || bend || clearance; }
+};
+
+/// Takes the limits of the instant `snapshot` into `status` and counts the cycle when one is exceeded;
+/// once per published cycle.
+void updateLimitStatus(const SimulationSnapshot& snapshot, LimitStatus& status);
+
 /// Counters and timing reported in cable_state and /diagnostics.
 struct NodeStatus {
   double sim_time = 0.0;         ///< simulator's time since the last reset [s]
@@ -81,6 +102,7 @@ struct NodeStatus {
   /// since the last reset (from the snapshot: CableSimulator::snaps, largestTension).
   unsigned slack_links = 0, snaps = 0;
   double largest_tension = 0.0;  ///< [N]
+  LimitStatus limits;            ///< cable.limits: exceeded now, where, and the cycles in excess
 };
 
 /// Sizes and names every message once: 3n joints, 2 + 3n transforms, 5 + kSceneMarkerCount + n markers (the
@@ -108,8 +130,9 @@ void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_posi
 /// Markers: the deployed cable coloured by tension against `tension_scale` [N] (as a line and as cylinders
 /// of its diameter; the drum's slots deleted), the load, the force arrows, the scale. The bodies' markers
 /// are constant in their frames: only their stamps change.
+/// With `colour_by` kUtilisation the cable is coloured by each link's utilisation instead (1 = red, a limit).
 void fillMarkers(const OutputSource& source, double total_length, double tension_scale, const ros::Time& stamp,
-                 visualization_msgs::MarkerArray& msg);
+                 visualization_msgs::MarkerArray& msg, MarkerColour colour_by = MarkerColour::kTension);
 /// cable_state: tensions (per slot), forces (world frame), energies, the winch, timing and counters.
 void fillCableState(const OutputSource& source, const NodeStatus& status, const ros::Time& stamp,
                     cable_msgs::CableState& msg);
@@ -121,8 +144,9 @@ void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_positi
 /// /diagnostics: one status with the level rules of docs/NODE.md (and the winch's values with a winch).
 void fillDiagnostics(const NodeStatus& status, const ros::Time& stamp, diagnostic_msgs::DiagnosticArray& msg);
 
-/// The diagnostics level and message for a status (docs/NODE.md: OK, WARN behind real time or past
-/// divergences, ERROR dropping time, diverging now, or most steps needing substeps).
+/// The diagnostics level and message for a status (docs/NODE.md: OK, WARN while a limit is exceeded (naming
+/// it and the link), behind real time or past divergences, ERROR dropping time, diverging now, or most steps
+/// needing substeps).
 unsigned char diagnosticLevel(const NodeStatus& status, std::string& message);
 
 }  // namespace cable_dynamics

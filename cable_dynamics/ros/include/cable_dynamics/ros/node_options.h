@@ -25,6 +25,8 @@ struct NodeOptions {
   bool max_steps_given = false;     ///< ros.max_steps_per_cycle was given: honoured as it is
   double max_lag = 1.0;            ///< simulated time behind the clock beyond this is dropped (and reported) [s]
   double tension_scale = 0.0;      ///< colour scale top [N]; 0 = the largest tension seen so far
+  /// What colours the cable in rviz (`ros.markers.colour_by`: tension | utilisation).
+  MarkerColour colour_by = MarkerColour::kTension;
   double diagnostics_period = 1.0;  ///< [s]
   BodyShapes shapes;                ///< rviz sizes of the vessel and the ROV (`vessel_size`, `rov_size`) [m]
   /// The lightest ROV an attached load's pose exchange must hold [kg]: the coupling is softened for it at the

@@ -37,11 +37,20 @@ void prepareBodyMarkers(const CableParams& params, const BodyShapes& shapes, con
 /// section's (scale.x = scale.y), length and pose from the link's ends, each cycle (fillTubeMarkers).
 void prepareTubeMarkers(const CableParams& params, const std::string& paper_frame,
                         visualization_msgs::Marker* markers);
+/// How rviz colours the cable (`ros.markers.colour_by`): by tension against the tension scale, or by
+/// utilisation against the limits (blue 0, green 0.5, red at 1 = a limit and above).
+enum class MarkerColour { kTension, kUtilisation };
+
 /// Places each deployed link's cylinder between its ends, coloured by its tension against `tension_scale`
 /// [N]; a slot on the winch's drum gets action DELETE (nothing left in rviz). `markers` holds one per slot.
-void fillTubeMarkers(const OutputSource& source, double tension_scale, visualization_msgs::Marker* markers);
+/// With `by_utilisation` each link is coloured by its utilisation instead (utilisationColor).
+void fillTubeMarkers(const OutputSource& source, double tension_scale, visualization_msgs::Marker* markers,
+                     bool by_utilisation = false);
 
 /// Blue (slack) through green to red (the top of the scale); compression in grey.
 std_msgs::ColorRGBA tensionColor(double tension, double scale);
+/// A utilisation's colour [-]: the tension's scale with its top at 1, a limit (blue 0, green 0.5, red at
+/// and above 1).
+inline std_msgs::ColorRGBA utilisationColor(double utilisation) { return tensionColor(utilisation, 1.0); }
 
 }  // namespace cable_dynamics

@@ -22,12 +22,15 @@ constexpr int kCsvSignificantDigits = 10;
 /// tensionK, top_tension, load_force_x/y/z, base_force_x/y/z, the energies, base_x/y/z (the base's
 /// position, which moves with base.motion or a base pose), deployed_length, winch_speed, deployed_links,
 /// the seabed's contact_energy, grounded_length, touchdown_arc_length (-1: no contact), touchdown_x/y/z
-/// (paper frame), max_penetration, with a seabed seabed_normalK per link [N], and with axial elasticity
-/// strainK per link [-] (its stretched length is l_K (1 + strainK)) and slack_links (a count).
+/// (paper frame), max_penetration, with a seabed seabed_normalK per link [N], with axial elasticity
+/// strainK per link [-] (its stretched length is l_K (1 + strainK)) and slack_links (a count), and last
+/// the limits (dynamics/cable_limits.h): bend_radiusK per joint [m] (`inf` where straight), utilisationK
+/// per link [-], min_bend_radius [m] and max_utilisation [-].
 std::vector<std::string> csvColumns(int links, bool seabed = false, bool axial = false);
 
-/// Whether every value of the row cable_sim's CSV would write for `s` is finite (CsvWriter::writeRow writes
-/// nothing and returns false otherwise): the same check for a run that writes no CSV (Simulator.run).
+/// Whether every value of the row cable_sim's CSV would write for `s` is finite, a bend radius's +inf (a
+/// straight joint) allowed (CsvWriter::writeRow writes nothing and returns false otherwise): the same check
+/// for a run that writes no CSV (Simulator.run).
 bool csvRowFinite(const SimulationSnapshot& s, bool seabed = false, bool axial = false);
 
 /// Writes cable_sim's CSV to a stream: the header, then rows formatted into a buffer sized once for
