@@ -18,19 +18,8 @@
 #include "cable_dynamics/ros/message_builders.h"
 #include "cable_dynamics/ros/node_options.h"
 
-// Counts heap allocations while `g_counting` is set (this test binary only).
-namespace {
-bool g_counting = false;
-long g_allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (g_counting) ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+// Counts heap allocations while g_counting is set (this test binary only).
+#include "../allocation_counter.h"
 
 namespace cable_dynamics {
 namespace {
