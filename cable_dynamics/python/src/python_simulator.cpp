@@ -73,7 +73,7 @@ RunOutcome PythonSimulator::run(double duration, double sample, const std::funct
       [&](const SimulationSnapshot& s, std::string& why) {
         // cable_sim's check: a row with a non-finite value stops the run (its CSV never holds one).
         if (writer ? !writer->writeRow(s) : !csvRowFinite(s, seabed, axial)) {
-          why = "non-finite output at t = " + formatNumber(s.time) + " s; stopped";
+          why = nonFiniteOutputReason(s.time);
           return 3;
         }
         if (on_sample) on_sample(toPython(s));

@@ -184,9 +184,7 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
       duration, sample,
       [&](const SimulationSnapshot& snapshot, std::string& why) {
         if (!writer.writeRow(snapshot)) {
-          std::ostringstream message;
-          message << "non-finite output at t = " << snapshot.time << " s; stopped";
-          why = message.str();
+          why = nonFiniteOutputReason(snapshot.time);
           return 3;
         }
         if (recorder && !recorder->record(sim, record_error)) {

@@ -8,6 +8,12 @@
 
 namespace cable_dynamics {
 
+std::string nonFiniteOutputReason(double time) {
+  std::ostringstream message;
+  message << "non-finite output at t = " << time << " s; stopped";
+  return message.str();
+}
+
 void SampledRun::addSample(const SimulationSnapshot& s) {
   balance_scale_ = std::max(balance_scale_, std::abs(s.chain.kinetic_energy) + std::abs(s.chain.potential_energy) +
                                                 std::abs(s.chain.elastic_energy));

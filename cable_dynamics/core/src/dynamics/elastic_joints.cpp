@@ -36,6 +36,7 @@ void bendTwist(const S& te_prev, const S& te, const S& a, const S& t, S& bend_sq
   // Euler angles make the twist psi + phi relative to the vertical; subtracting the transport holonomy
   // leaves the twist between neighbours (sigma_k - sigma_{k-1} = a_k + t_k).
   twist = a + t - transportHolonomy(ax, ay, az, bx, by, bz);
+  twist = principalTwist(twist, valueOf(twist));  // as the dynamics' jointGeometry
 }
 
 template <typename S>

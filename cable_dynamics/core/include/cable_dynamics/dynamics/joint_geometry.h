@@ -38,6 +38,19 @@ S bendAngleSquared(const S& chord_squared, double chord_value) {
 /// its series where sin(beta) -> 0.
 inline double bendOverSine(double bend, double sine) { return bend < 1e-4 ? 1.0 + bend * bend / 6.0 : bend / sine; }
 
+/// A joint's twist [rad] brought to (-2 pi, 2 pi] (`value`: the twist's value, for an automatic-differentiation
+/// scalar S; the shift is a constant, so the derivatives stay). The transport holonomy is a solid angle,
+/// defined modulo 4 pi: where the arc between two steeply rising links passes over the upward pole (bent
+/// across the vertical plane), its arctangent changes branch between two evaluations while the frames move
+/// by nothing, and the twist spring saw two whole turns appear (config/tms_tether.yaml in a current along
+/// x: 526 J in one substep, the run stopped at 0.097 s). No twist a joint can physically hold (a whole turn
+/// across one joint) is changed.
+template <typename S>
+S principalTwist(const S& twist, double value) {
+  if (std::abs(value) <= 2.0 * M_PI) return twist;
+  return twist - (value - std::remainder(value, 4.0 * M_PI));
+}
+
 /// One joint of the bending model between the axes `prev` and `axis` with vertical twists sigma_prev and
 /// sigma [rad].
 struct JointGeometry {
@@ -68,14 +81,8 @@ inline JointGeometry jointGeometry(const Eigen::Vector3d& prev, const Eigen::Vec
   // transportHolonomy(), with the series where the triangle is thin.
   const double vertical_triple = prev.x() * axis.y() - prev.y() * axis.x();
   const double holonomy = -2.0 * smallAtan2(vertical_triple, 1.0 + prev.z() + axis.z() + g.cosine);
-  // The holonomy is a solid angle, defined modulo 4 pi: where the arc from prev to axis passes over the
-  // upward pole (a steep rising pair of links bent across the vertical plane), the arctangent's branch
-  // jumps by 4 pi between two evaluations while the frames move by nothing, and the twist spring saw two
-  // whole turns appear (config/tms_tether.yaml in a current along x: 526 J in one substep, the run
-  // stopped at 0.097 s). The twist is brought back to (-2 pi, 2 pi], which changes no twist a joint can
-  // physically hold (a whole turn across one joint) and undoes the jump exactly.
-  g.twist = sigma - sigma_prev - holonomy;
-  if (std::abs(g.twist) > 2.0 * M_PI) g.twist = std::remainder(g.twist, 4.0 * M_PI);
+  const double twist = sigma - sigma_prev - holonomy;
+  g.twist = principalTwist(twist, twist);
   return g;
 }
 

@@ -20,6 +20,10 @@ namespace cable_dynamics {
 /// `error`.
 using SampleHandler = std::function<int(const SimulationSnapshot& snapshot, std::string& error)>;
 
+/// The reason a run stops at a sample with a non-finite output (status 3), as cable_sim prints it: one
+/// text for cable_sim and Simulator.run, so a sweep's row and a direct run give the same reason.
+std::string nonFiniteOutputReason(double time);
+
 /// One run of a simulator from its present instant (as cable_sim does it).
 class SampledRun {
  public:
