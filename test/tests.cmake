@@ -165,3 +165,9 @@ catkin_add_gtest(test_written_once test/test_written_once.cpp)
 target_link_libraries(test_written_once cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 catkin_add_gtest(test_force_modules test/test_force_modules.cpp)
 target_link_libraries(test_force_modules cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+# The exact anchor (load.anchor exact): a V of two rods against the physical pendulum and its support
+# reactions, the statics' tip on the anchor, a mooring chain's hold at each integrator's recommended step.
+catkin_add_gtest(test_exact_anchor test/test_exact_anchor.cpp)
+target_link_libraries(test_exact_anchor cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_exact_anchor PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")

@@ -21,6 +21,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/hot_path.h"
 
@@ -82,8 +84,23 @@ EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainModel& model, LinkBlocks& link
 /// it, (M, F) at the far end, passes along u only the stretch's tension T (u . J = -T), so eliminating
 /// s'' = -(T + u . F + (M u) . d_q) / (u^T M u) leaves M - (M u)(M u)^T / (u^T M u) and
 /// F - (M u)(T + u . F) / (u^T M u) at the rigid far end, l + s from the base end (the lever below).
-template <bool kAxial>
-EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, bool all_joint_forces) {
+/// An exact anchor's sums over the chain (docs/MODEL.md section 14), formed in a backward pass: the tip's
+/// d_n at the present tip force, and its change per unit change of the tip's bias force F_n (3x3, symmetric,
+/// negative semi-definite: minus the tip's inverse articulated inertia with the base held).
+///
+/// d_n = sum_k Psi_{k+1} c_k with Psi_{k+1} = T_{n-1} ... T_{k+1} (forwardPass: d_{k+1} = T_k d_k + c_k),
+/// and F_{k+1} = Psi_{k+1}^T F_n + (the rest), since the backward pass moves a force inwards by T_k^T. So
+/// dd_n/dF_n = sum_k Psi_{k+1} N_k Psi_{k+1}^T with N_k = dc_k/dF_{k+1} = P (dc_rot/dF') P^T - u u^T / (u^T M u),
+/// dc_rot/dF' = -(s_a p p^T + s_b (p r^T + r p^T) + s_d r r^T) / det(S) (p = l e1, r = l e2), P = I - u g^T.
+struct HoldSums {
+  Eigen::Matrix3d psi = Eigen::Matrix3d::Identity();  ///< Psi_{k+1}, from the tip inwards [-]
+  Eigen::Vector3d tip_delta = Eigen::Vector3d::Zero();  ///< d_n [m/s^2]
+  Eigen::Matrix3d response = Eigen::Matrix3d::Zero();  ///< dd_n/dF_n [1/kg]
+};
+
+template <bool kAxial, bool kHeld>
+EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, bool all_joint_forces,
+                                      HoldSums* sums = nullptr) {
   const double load_inertia = model.load().inertia;
   Symmetric3 child = Symmetric3::scaledIdentity(load_inertia);
   Vec3 child_force = toVec3(load_inertia * data.tip_known_acc - data.load_external);
@@ -98,6 +115,7 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
     const int i = LinkBlocks::lane(k);
     // The lever from the base end to the far end, l (+ s with axial elasticity).
     const double l = kAxial ? c.length[i] + block.stretch[i] : c.length[i];
+    const Symmetric3 child_before_axial = child;  // the held sums' u^T M u (unused otherwise)
     if (kAxial) {
       const bool locked = model.stretchLocked(k);
       const Vec3 u = block.u[i], m_u = child * u;
@@ -146,6 +164,27 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
     block.x2.set(i, x2);
     block.y1[i] = -inv_det * (s_d * g1 - s_b * g2);  // y_g = -S^-1 g
     block.y2[i] = -inv_det * (s_a * g2 - s_b * g1);
+    if (kHeld) {
+      // HoldSums: with a = Psi P p, b = Psi P r, w = Psi u, Psi c_k = y2 a - y1 b - bias w and
+      // Psi N_k Psi^T = -(s_a a a^T + s_b (a b^T + b a^T) + s_d b b^T) / det - w w^T / (u^T M u).
+      const Eigen::Vector3d p = toEigen(l * e1), r = toEigen(l * e2), u = toEigen(block.u[i]);
+      Eigen::Vector3d pp = p, pr = r, gain = Eigen::Vector3d::Zero();
+      double bias = 0.0, inverse = 0.0;
+      if (kAxial) {
+        gain = toEigen(block.stretch_gain[i]);  // g = M u / (u^T M u): P v = v - u (g . v)
+        bias = block.stretch_bias[i];
+        inverse = model.stretchLocked(k) ? 0.0 : 1.0 / dot(block.u[i], child_before_axial * block.u[i]);
+        pp -= gain.dot(p) * u;
+        pr -= gain.dot(r) * u;
+      }
+      const Eigen::Vector3d a = sums->psi * pp, b = sums->psi * pr, w = sums->psi * u;
+      sums->tip_delta += block.y2[i] * a - block.y1[i] * b - bias * w;
+      sums->response -= inv_det * (s_a * a * a.transpose() + s_b * (a * b.transpose() + b * a.transpose()) +
+                                   s_d * b * b.transpose()) +
+                        inverse * w * w.transpose();
+      // Psi_k = Psi_{k+1} P T_rot = Psi - w g^T + b x1^T - a x2^T.
+      sums->psi += b * toEigen(x1).transpose() - a * toEigen(x2).transpose() - w * gain.transpose();
+    }
     child = m;
     child_force = force;
   }
@@ -255,17 +294,45 @@ void stretchAccelerationPass(const ChainModel& model, LinkBlocks& links, const V
   if (model.lastStretchLocked()) links.of(n - 1).stretch_acc[LinkBlocks::lane(n - 1)] = 0.0;
 }
 
+/// An exact anchor's force on the load: the one that gives the tip data.tip_demand, from a backward pass at
+/// the present loads (HoldSums). A force f on the load changes F_n by -f, so the tip's acceleration is
+/// a_free - R f with R = dd_n/dF_n; R is inverted on its range (a direction the chain cannot move the tip
+/// in, such as along a straight chain of rigid links, gets no force). Into data.coupling and load_external.
+/// Returns false when the sums are not finite.
+bool solveHoldForce(const ChainModel& model, ChainData& data) {
+  HoldSums sums;
+  if (model.axial()) {
+    backwardPass<true, true>(model, data, false, &sums);
+  } else {
+    backwardPass<false, true>(model, data, false, &sums);
+  }
+  const Eigen::Matrix3d compliance = -0.5 * (sums.response + sums.response.transpose());  // [1/kg]
+  const Eigen::Vector3d shortfall = data.tip_demand - (data.tip_known_acc + sums.tip_delta);
+  if (!compliance.allFinite() || !shortfall.allFinite()) return false;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(compliance);
+  const Eigen::Vector3d values = eigen.eigenvalues();
+  const double floor = 1e-12 * values.cwiseAbs().maxCoeff();
+  Eigen::Vector3d along = eigen.eigenvectors().transpose() * shortfall;
+  for (int j = 0; j < 3; ++j) along(j) = values(j) > floor ? along(j) / values(j) : 0.0;
+  data.coupling = eigen.eigenvectors() * along;
+  data.load_external += data.coupling;
+  return data.coupling.allFinite();
+}
+
 }  // namespace
 
-CABLE_HOT_PATH void solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces) {
+CABLE_HOT_PATH bool solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces) {
   linkTermsPass(model, data.links);
   const bool axial = model.axial();
-  const Vec3 base_force = axial ? backwardPass<true>(model, data, all_joint_forces)  // F_0
-                                : backwardPass<false>(model, data, all_joint_forces);
+  if (model.heldTip() && !solveHoldForce(model, data)) return false;
+  const Vec3 base_force = axial ? backwardPass<true, false>(model, data, all_joint_forces)  // F_0
+                                : backwardPass<false, false>(model, data, all_joint_forces);
   const Vec3 tip_delta = axial ? forwardPass<true>(model, data.links) : forwardPass<false>(model, data.links);
   if (axial) stretchAccelerationPass(model, data.links, tip_delta);
   data.added_mass_power = accelerationPass(model, data.links);
   jointForcesPass(model, data, base_force, tip_delta, all_joint_forces);
+  return true;
 }
 
 }  // namespace cable_dynamics

@@ -57,7 +57,7 @@ bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool 
   computeExternalLoads(model_, data_, ends);
   computeJointTorques(model_, data_, x);
   if (model_.formulation() == Formulation::kRecursive) {
-    solveArticulatedBody(model_, data_, all_joint_forces);
+    if (!solveArticulatedBody(model_, data_, all_joint_forces)) return false;
   } else {
     if (!solveDense(model_, data_)) return false;  // its workspace: allocated by ChainData for this formulation
   }

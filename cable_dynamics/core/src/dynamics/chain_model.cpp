@@ -1,6 +1,7 @@
 #include "cable_dynamics/dynamics/chain_model.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +46,17 @@ ChainModel::ChainModel(const CableParams& params)
   load_.drag_area = params.load.drag_area;
   load_.coupling_stiffness = params.load.coupling_stiffness;
   load_.coupling_damping = params.load.coupling_damping;
+  if (params.load.heldExactly() && n_ > 0) {
+    // An exact anchor (docs/MODEL.md section 14): RK4 on the recursion solves for the hold's force; the
+    // other steps get the internal hold as the coupling, critically damped on the tip's share of mass.
+    held_tip_ = params.simulation.integrator == Integrator::kRk4 && params.simulation.formulation == Formulation::kRecursive;
+    hold_time_constant_ = params.simulation.dt;
+    const double length = p.length.sum(), mass = p.mass.sum() + p.load_mass;
+    hold_stiffness_ = length > 0.0 ? 1e6 * p.gravity * mass / length : 0.0;
+    const double tip_mass = load_.inertia + p.mass(n_ - 1);
+    load_.coupling_stiffness = held_tip_ ? 0.0 : hold_stiffness_;
+    load_.coupling_damping = held_tip_ ? 0.0 : 2.0 * std::sqrt(hold_stiffness_ * tip_mass);
+  }
   axial_ = p.axial_stiffness.size() > 0 && p.axial_stiffness.maxCoeff() > 0.0;
   last_locked_ = !(load_.inertia > 0.0) && !body_.active;
   // Padding lanes past the last link: zero length and mass, 1/I_P = 0; they add nothing anywhere.

@@ -71,7 +71,14 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
   }
   data.drag_power = drag_power;
   data.coupling.setZero();
-  if (ends.load_coupled) {
+  if (ends.load_coupled && model.heldTip()) {
+    // An exact anchor: no spring; the recursion solves for the force that gives the tip this acceleration.
+    // Its drift correction (Baumgarte's, critically damped at tau, the step) brings back the round-off and
+    // the integrator's truncation error, which an acceleration-level hold alone would let accumulate.
+    const double rate = 1.0 / model.holdTimeConstant();
+    data.tip_demand = ends.target_acceleration - 2.0 * rate * (data.tip_velocity - ends.target_velocity) -
+                      rate * rate * (data.tip_position - ends.target_position);
+  } else if (ends.load_coupled) {
     data.coupling = load.coupling().force(data.tip_position, data.tip_velocity, ends.target_position, ends.target_velocity);
     data.load_external += data.coupling;
   }

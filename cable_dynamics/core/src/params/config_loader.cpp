@@ -169,6 +169,16 @@ void parseLoad(Section load, CableParams& p) {
   if (load.has("body")) p.load.body = parseRovBody(load.sub("body"));
   p.load.drag_area = load.number("drag_area", 0.0, 0.0, 1e4, false, "m^2");
   p.load.added_mass = load.number("added_mass", 0.0, 0.0, 1e7, false, "kg");
+  if (load.has("anchor") && p.load.mode != LoadMode::kAnchored) {
+    throw ConfigError("load.anchor", describeNode(load.raw("anchor")), "given only with load.mode: anchored");
+  }
+  p.load.anchor = load.choice("anchor", "exact", {"exact", "spring"}) == "exact" ? AnchorHold::kExact : AnchorHold::kSpring;
+  if (p.load.heldExactly() && load.has("coupling")) {
+    // The exact hold has no gains: a coupling given here would be silently unused.
+    throw ConfigError("load.coupling", describeNode(load.raw("coupling")),
+                      "absent with load.mode anchored: the anchor holds its point exactly (load.anchor: spring for an "
+                      "anchor that gives by the coupling)");
+  }
   Section coupling = load.sub("coupling");
   p.load.coupling_stiffness = coupling.number("stiffness", 2.0e4, 0.0, 1e9, true, "N/m");
   p.load.coupling_damping = coupling.number("damping", 2.0e3, 0.0, 1e9, false, "N s/m");

@@ -116,6 +116,7 @@ void CableSimulator::updateBodyThrust() {
 }
 
 StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) {
+  ends_.setHoldOffset(Eigen::Vector3d::Zero());  // the statics hold the anchor itself
   const EndInputs ends = ends_.at(time_);
   StaticProblem problem;
   problem.base_position = ends.base_position;
@@ -132,6 +133,13 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   if (!s.converged) return s;
   const int n = links();
   setRestState(s, x_);
+  // The implicit steps' spring hold starts with the anchor's reaction, its rest point beyond the anchor, so
+  // that the run starts with the tip on the anchor and no transient; it then gives by the change of the
+  // anchor's force over k_h (moving its rest point after each step by the tip's miss, an integral action,
+  // rang with the stiff mode, which the implicit step damps only by rho_infinity a step, and diverged).
+  if (params_.load.heldExactly() && !dynamics_.model().heldTip()) {
+    ends_.setHoldOffset(s.hold_force / dynamics_.model().load().coupling_stiffness);
+  }
   watchStretches(false);
   x_(StateLayout::dissipated(n)) = 0.0;
   x_(StateLayout::workInput(n)) = 0.0;
@@ -156,6 +164,12 @@ void CableSimulator::recover() {
   deployConfigured();
   setPaperState(q, qd);
   time_ = t;
+  // An exact anchor holds a tip that starts on it: the equilibrium again, where the run started from one
+  // (its angles' tip is not on the anchor); the angles when the statics fail there.
+  if (params_.load.heldExactly() && params_.initial.mode == InitialMode::kEquilibrium && !resetToEquilibrium().converged) {
+    setPaperState(q, qd);
+    time_ = t;
+  }
 }
 
 void CableSimulator::deployConfigured() {

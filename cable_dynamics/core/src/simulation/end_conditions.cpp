@@ -57,6 +57,7 @@ void EndConditions::reset() {
   load_attitude_ = base_attitude_ = Eigen::Quaterniond::Identity();
   external_clamp_twist_ = rest_clamp_twist_;
   body_thrust_.setZero();
+  hold_offset_.setZero();
 }
 
 EndInputs EndConditions::at(double t) const {
@@ -77,11 +78,13 @@ EndInputs EndConditions::at(double t) const {
     ends.target_position = load_position_ + std::clamp(ahead, -kTargetExtrapolation, kTargetExtrapolation) * load_velocity_;
     ends.target_velocity = moving ? load_velocity_ : Eigen::Vector3d::Zero();
   } else if (ends.load_coupled) {
-    Eigen::Vector3d acceleration;
-    motionAt(load_.motion, load_.attachment, t, ends.target_position, ends.target_velocity, acceleration);
+    motionAt(load_.motion, load_.attachment, t, ends.target_position, ends.target_velocity, ends.target_acceleration);
     ends.target_position += initial_tip_;
-    if (load_.mode == LoadMode::kAnchored) ends.target_velocity.setZero();
+    // A spring anchor's damper holds the tip still; an exact anchor follows a moving anchor's motion.
+    if (load_.mode == LoadMode::kAnchored && !load_.heldExactly()) ends.target_velocity.setZero();
+    if (load_.mode != LoadMode::kAnchored || !load_.heldExactly()) ends.target_acceleration.setZero();
   }
+  if (load_.heldExactly()) ends.target_position += hold_offset_;  // zero unless the steps hold it by a spring
   // The clamp turns with the vessel: its frame is the vessel's rotation of its rest frame.
   if (external_base_ ? base_attitude_.coeffs() != Eigen::Quaterniond::Identity().coeffs()
                      : !base_.motion.attitude_amplitude.isZero()) {

@@ -285,7 +285,10 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
                                                                     " (damping, station keeping, restoring)");
     }
   }
-  if ((params.load.mode == LoadMode::kAnchored || params.load.mode == LoadMode::kAttached) && n > 0) {
+  // An exact anchor has no spring for RK4 (a constraint force; its drift correction is critically damped at
+  // the step itself); the implicit steps' internal hold is folded into their matrix.
+  if ((params.load.mode == LoadMode::kAnchored || params.load.mode == LoadMode::kAttached) && n > 0 &&
+      !params.load.heldExactly()) {
     const double l = p.length(n - 1);
     const double tip_mass = p.load_mass + params.load.added_mass + 0.5 * (p.mass(n - 1) + p.added_mass_per_length(n - 1) * l);
     stiffest.consider(params.load.coupling_damping / tip_mass, params.load.coupling_stiffness / tip_mass,

@@ -35,7 +35,11 @@ StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& cu
   }
   has_bend_ = (bend_stiffness_.array() > 0.0).any();
   in_water_ = model.fluidDensity() > 0.0;
-  coupling_stiffness_ = problem.tip_coupled ? model.load().coupling().stiffnessJacobian() : 0.0;
+  // An exact anchor's statics hold the tip with a spring whose target solveStatics shifts until the tip
+  // sits on the anchor; otherwise the coupling spring.
+  coupling_stiffness_ = !problem.tip_coupled          ? 0.0
+                        : model.holdStiffness() > 0.0 ? staticHoldStiffness(model)
+                                                      : model.load().coupling().stiffnessJacobian();
   clamp_axis_ = problem.clamp_moves ? problem.clamp_axis : p.clamp_axis;
   tip_clamp_stiffness_ = problem.tip_coupled ? p.tip_clamp_stiffness : 0.0;
   tip_clamp_axis_ = problem.tip_clamp_moves ? problem.tip_clamp_axis : p.tip_clamp_axis;
@@ -124,7 +128,7 @@ Eigen::Vector3d StaticEquations::loadForceFree(const Eigen::Vector3d& tip) const
 
 Eigen::Vector3d StaticEquations::couplingForce(const Eigen::Vector3d& tip) const {
   if (!problem_.tip_coupled) return Eigen::Vector3d::Zero();
-  return model_.load().coupling().atRest(tip, problem_.target_position);
+  return LoadCoupling{coupling_stiffness_, 0.0}.atRest(tip, problem_.target_position);
 }
 
 Eigen::Vector3d StaticEquations::outboardForce(const StaticState& s, int i) const {

@@ -31,6 +31,12 @@ struct LinkResidual {
   Eigen::Vector3d closure;  ///< p_i - p_{i-1} - l_{i-1} u_{i-1} [m]
 };
 
+/// The spring an exact anchor's statics hold the tip with while solveStatics shifts its target onto the
+/// anchor [N/m]: 1e-2 of the dynamics' internal hold (ChainModel::holdStiffness), 1e4 times the line's
+/// weight per length. Soft enough for the seabed's contact continuation and for a force residual well
+/// above round-off; stiff enough that the shifts converge in a few sweeps.
+inline double staticHoldStiffness(const ChainModel& model) { return 1e-2 * model.holdStiffness(); }
+
 class StaticEquations {
  public:
   StaticEquations(const ChainModel& model, const CurrentField& current, const StaticProblem& problem);

@@ -1,7 +1,10 @@
 #include "cable_dynamics/statics/static_solver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+
+#include <Eigen/LU>
 
 #include "cable_dynamics/dynamics/joint_geometry.h"
 #include "cable_dynamics/dynamics/state_layout.h"
@@ -98,6 +101,7 @@ void writeSolution(const ChainModel& model, const StaticEquations& eq, const Sta
   }
   out.tip_position = eq.tip(s);
   out.tip_force = eq.outboardForce(s, eq.links() - 1);
+  out.hold_force = eq.couplingForce(out.tip_position);
 }
 
 /// Without the seabed's contact (the scale eq has): the limp or spring-loaded problem.
@@ -185,33 +189,57 @@ Eigen::VectorXd stretchUnderTension(const ChainModel& model, const StaticSolutio
 
 StaticSolution solveStatics(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
                             const StaticOptions& options) {
-  if (!model.axial()) return solveAtStretch(model, current, problem, options);
-  // The elastic equilibrium by a fixed point on the stretches: solve with the levers l + s, stretch each
-  // link under its far end's tension, repeat. Each sweep changes the tensions by the stretch's share of the
-  // line's compliance (about T L / EA of the geometry: 0.04 for a taut 410 m chain at 1 MN), so it
-  // contracts fast for a cable; it is stopped when the stretches move by less than 1e-12 of the length.
-  StaticProblem elastic = problem;
-  elastic.stretch = Eigen::VectorXd::Zero(model.links());
+  const bool held = problem.tip_coupled && model.holdStiffness() > 0.0;
+  if (!model.axial() && !held) return solveAtStretch(model, current, problem, options);
+  // Two fixed points in one loop, each sweep a solve:
+  // - the elastic equilibrium: solve with the levers l + s, stretch each link under its far end's tension,
+  //   repeat. Each sweep changes the tensions by the stretch's share of the line's compliance (about
+  //   T L / EA of the geometry: 0.04 for a taut 410 m chain at 1 MN), so it contracts fast for a cable;
+  // - an exact anchor: the statics' hold (staticHoldStiffness) leaves the tip f / k short of the anchor;
+  //   its target moves by Broyden's secant steps on the map target -> tip (starting from the identity, a
+  //   hold far stiffer than the line at the tip), and the tip lands on the anchor in a few sweeps. The
+  //   hold then carries exactly the anchor's reaction.
+  // Stopped when the stretches and the tip move by less than 1e-12 of the length.
+  StaticProblem sweep_problem = problem;
+  if (model.axial()) sweep_problem.stretch = Eigen::VectorXd::Zero(model.links());
   const double length = model.properties().length.sum();
   constexpr int kMaxSweeps = 100;
   StaticSolution out;
+  Eigen::Matrix3d secant = Eigen::Matrix3d::Identity();  // d tip / d target, Broyden's estimate
+  Eigen::Vector3d last_shift = Eigen::Vector3d::Zero(), last_tip = Eigen::Vector3d::Zero();
   for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
     const int iterations = out.iterations;
-    out = solveAtStretch(model, current, elastic, options);
+    out = solveAtStretch(model, current, sweep_problem, options);
     out.iterations += iterations;
-    out.elastic_sweeps = sweep;
+    out.elastic_sweeps = model.axial() ? sweep : 0;
     if (!out.converged) return out;
-    const Eigen::VectorXd next = stretchUnderTension(model, out, problem.first_link);
-    const double change = (next - elastic.stretch).cwiseAbs().maxCoeff();
-    elastic.stretch = next;
+    double change = 0.0;
+    if (model.axial()) {
+      const Eigen::VectorXd next = stretchUnderTension(model, out, problem.first_link);
+      change = (next - sweep_problem.stretch).cwiseAbs().maxCoeff();
+      sweep_problem.stretch = next;
+    }
+    if (held) {
+      const Eigen::Vector3d miss = problem.target_position - out.tip_position;
+      change = std::max(change, miss.cwiseAbs().maxCoeff());
+      if (sweep > 1 && last_shift.squaredNorm() > 0.0) {  // Broyden's update on the last shift's effect
+        const Eigen::Vector3d moved = out.tip_position - last_tip;
+        secant += (moved - secant * last_shift) * last_shift.transpose() / last_shift.squaredNorm();
+      }
+      last_shift = secant.fullPivLu().solve(miss);
+      if (!last_shift.allFinite()) last_shift = miss;
+      last_tip = out.tip_position;
+      sweep_problem.target_position += last_shift;
+    }
     if (change <= 1e-12 * length) {
-      out.stretch = elastic.stretch;
+      if (model.axial()) out.stretch = sweep_problem.stretch;
       return out;
     }
   }
   out.converged = false;
-  out.message = "the elastic equilibrium's stretches did not settle in " + std::to_string(kMaxSweeps) +
-                " sweeps (an EA so low that the line's shape follows its stretch)";
+  out.message = std::string(model.axial() ? "the elastic equilibrium's stretches" : "the anchored tip") +
+                " did not settle in " + std::to_string(kMaxSweeps) +
+                " sweeps (an EA so low that the line's shape follows its stretch, or a tip the line cannot reach)";
   return out;
 }
 

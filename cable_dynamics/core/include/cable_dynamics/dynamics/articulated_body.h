@@ -12,7 +12,9 @@ namespace cable_dynamics {
 /// joint forces (all of them with `all_joint_forces`, else only joint 0's, which the input power needs),
 /// after the kinematics, the external loads and the joint torques. O(n), no heap allocation. Passes:
 /// linkTermsPass (each link on its own), backwardPass (serial, load to base), forwardPass (serial, base to
-/// load), accelerationPass (each link on its own), jointForcesPass.
-void solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces);
+/// load), accelerationPass (each link on its own), jointForcesPass. With an exact anchor
+/// (ChainModel::heldTip()) a first backward pass finds the anchor's force (data.coupling) that gives the
+/// tip data.tip_demand. Returns false when that force is not finite.
+bool solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces);
 
 }  // namespace cable_dynamics

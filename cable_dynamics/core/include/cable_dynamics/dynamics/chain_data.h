@@ -52,6 +52,10 @@ struct ChainData {
   // Load forces [N]: from the external loads; load_force after the solve.
   Eigen::Vector3d load_external = Eigen::Vector3d::Zero();  ///< weight, drag and coupling on the load
   Eigen::Vector3d coupling = Eigen::Vector3d::Zero();       ///< PD force of the anchor / ROV on the load
+                                                            ///< (an exact anchor: its constraint force)
+  /// An exact anchor (ChainModel::heldTip()): the tip's acceleration the hold's force must give, the
+  /// anchor's less the drift correction (external_loads.cpp) [m/s^2].
+  Eigen::Vector3d tip_demand = Eigen::Vector3d::Zero();
   Eigen::Vector3d load_force = Eigen::Vector3d::Zero();     ///< force the cable exerts on the load
   RovBodyTerms body;  ///< the ROV body's terms (load.mode body: rov_body.h)
 

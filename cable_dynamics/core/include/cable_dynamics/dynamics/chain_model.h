@@ -138,6 +138,21 @@ class ChainModel {
   /// true when some attachment has drag (the drag pass then visits them).
   bool attachmentDrag() const { return attachment_drag_; }
   const LoadConstants& load() const { return load_; }
+  /// An exact anchor (load.anchor exact) that the recursion holds by a constraint force (RK4 on the
+  /// recursive formulation; docs/MODEL.md section 14): the external loads then put no coupling on the load,
+  /// and solveArticulatedBody solves for the force that gives the tip the acceleration ChainData::tip_demand.
+  bool heldTip() const { return held_tip_; }
+  /// The time constant tau of the hold's drift correction [s] (the configured step): the tip's demanded
+  /// acceleration is the target's less 2/tau the velocity error and 1/tau^2 the position error.
+  double holdTimeConstant() const { return hold_time_constant_; }
+  /// The stiffness of the internal hold that stands in for an exact anchor where no constraint is solved
+  /// [N/m]: the implicit and semi-implicit steps fold it into their matrix (and their statics hold the tip
+  /// with it, so that a run starts without a transient), and the statics of a held tip shift its target
+  /// until the tip sits on the anchor. 1e6 times the cable's and load's weight in air per length of cable:
+  /// a tension of the whole line's weight moves the tip by 1e-6 of the length. Stiffer, the statics' force
+  /// residual meets round-off (the tip's position to 1e-16 of the length, times the hold) above their
+  /// 1e-9 tolerance. 0 without an exact anchor.
+  double holdStiffness() const { return hold_stiffness_; }
   /// The ROV body hung on the tip (load.mode body; inactive otherwise).
   const RovBodyConstants& body() const { return body_; }
   /// A clamped tip's bend spring and damper (forces/tip_clamp.h; inactive unless load.fixity is clamped).
@@ -170,6 +185,8 @@ class ChainModel {
   bool has_winch_ = false;
   bool axial_ = false;
   bool last_locked_ = false;
+  bool held_tip_ = false;
+  double hold_time_constant_ = 0.0, hold_stiffness_ = 0.0;
   LinkProperties nominal_;     ///< every slot as configured (the drum's at the length they will have)
   LinkProperties properties_;  ///< as deployed now
   Formulation formulation_;

@@ -42,6 +42,7 @@ struct EndInputs {
   bool load_coupled = false;                                    ///< PD coupling of the tip to a target
   Eigen::Vector3d target_position = Eigen::Vector3d::Zero();    ///< [m]
   Eigen::Vector3d target_velocity = Eigen::Vector3d::Zero();    ///< [m/s]
+  Eigen::Vector3d target_acceleration = Eigen::Vector3d::Zero();  ///< [m/s^2] (an exact anchor's hold reads it)
   /// The base's clamp turns with the vessel (bending model): its axis (unit), its twist sigma [rad] and
   /// its angular velocity [rad/s]. Otherwise the clamp is LinkProperties::clamp_axis and clamp_twist, at rest.
   bool clamp_moves = false;

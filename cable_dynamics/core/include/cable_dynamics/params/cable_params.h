@@ -46,6 +46,15 @@ enum class TipFixity {
   kClamped,  ///< its direction held along load.direction by a bend spring (a swivel: torsion is free)
 };
 
+/// How an anchored tip holds its point (load.anchor).
+enum class AnchorHold {
+  /// Exactly: a constraint force keeps the tip on the anchor (docs/MODEL.md section 14); load.coupling
+  /// is not used. The recursive formulation's RK4 solves for it in the recursion; the implicit and
+  /// semi-implicit steps fold a stiff internal hold into their matrix instead.
+  kExact,
+  kSpring,  ///< by the PD coupling load.coupling: an anchor that gives (a drag anchor, a soft mooring)
+};
+
 /// How the terminal load is held (used by the simulator).
 enum class LoadMode {
   kFree,      ///< the load hangs at the tip, moved only by the cable and the fluid
@@ -123,7 +132,8 @@ struct LoadParams {
   LoadMode mode = LoadMode::kFree;
   double drag_area = 0.0;            ///< frontal area times drag coefficient, C_d A [m^2]
   double added_mass = 0.0;           ///< added mass of the load [kg]
-  double coupling_stiffness = 2.0e4; ///< PD coupling to the anchor / ROV [N/m]
+  AnchorHold anchor = AnchorHold::kExact;  ///< mode anchored: held exactly, or by the coupling spring
+  double coupling_stiffness = 2.0e4; ///< PD coupling to the anchor (load.anchor spring) / ROV [N/m]
   double coupling_damping = 2.0e3;   ///< [N s/m]
   /// Anchor / ROV target relative to the load's initial position (modes anchored, attached).
   MotionParams motion;
@@ -136,6 +146,8 @@ struct LoadParams {
   TipFixity fixity = TipFixity::kPinned;
   Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ();  ///< unit [-]
   RovBodyParams body;  ///< mode body only
+  /// The anchor holds its point exactly (mode anchored with load.anchor exact).
+  bool heldExactly() const { return mode == LoadMode::kAnchored && anchor == AnchorHold::kExact; }
 };
 
 /// The cable's base (vessel, cage or fixed point).

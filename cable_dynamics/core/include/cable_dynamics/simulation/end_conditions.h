@@ -61,6 +61,12 @@ class EndConditions {
   /// The ROV body's thrust (load.mode body): force and moment at its origin, body frame [N, N m], held
   /// until the next call (the simulator sets it each step: commanded thrust plus station keeping).
   void setBodyThrust(const Eigen::Matrix<double, 6, 1>& thrust) { body_thrust_ = thrust; }
+  /// An exact anchor held by the implicit steps' internal spring (ChainModel::holdStiffness): the spring's
+  /// rest point lies this far beyond the anchor (paper frame [m]), so that it carries the anchor's force
+  /// with the tip on the anchor. The simulator sets it from the statics' reaction. Zero otherwise, and
+  /// after reset().
+  void setHoldOffset(const Eigen::Vector3d& offset) { hold_offset_ = offset; }
+  const Eigen::Vector3d& holdOffset() const { return hold_offset_; }
   /// The vessel's and the ROV's attitude at time t (world from body): external, or the configured motion's.
   Eigen::Quaterniond baseAttitude(double t) const;
   Eigen::Quaterniond loadAttitude(double t) const;
@@ -82,6 +88,7 @@ class EndConditions {
   Eigen::Quaterniond load_attitude_ = Eigen::Quaterniond::Identity(), base_attitude_ = Eigen::Quaterniond::Identity();
   double load_time_ = 0.0;  ///< simulated time of the external load target [s]
   Eigen::Matrix<double, 6, 1> body_thrust_ = Eigen::Matrix<double, 6, 1>::Zero();  ///< [N, N m], body frame
+  Eigen::Vector3d hold_offset_ = Eigen::Vector3d::Zero();  ///< paper frame [m]
 };
 
 }  // namespace cable_dynamics

@@ -73,6 +73,9 @@ struct StaticSolution {
   Eigen::Matrix3Xd joint_force;  ///< (3 x n) force on the outboard part at each link's base end [N]
   Eigen::Vector3d tip_position = Eigen::Vector3d::Zero();  ///< [m]
   Eigen::Vector3d tip_force = Eigen::Vector3d::Zero();  ///< the cable's force on the load [N]
+  /// The anchor's or the coupling's force on the load at the solution [N] (zero for a free tip): an exact
+  /// anchor's reaction.
+  Eigen::Vector3d hold_force = Eigen::Vector3d::Zero();
   /// Axial elasticity: each link's stretch at equilibrium, s_k = T_k l_k / EA_k with T_k the tension at
   /// its far end [m] (n; empty with rigid links), and the fixed-point sweeps that found it.
   Eigen::VectorXd stretch;
