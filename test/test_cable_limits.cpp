@@ -52,7 +52,7 @@ CableParams arcCable(int n, const std::vector<std::string>& extra = {}) {
       "cable={links: " + std::to_string(n) + ", length: 10.0, diameter: 0.025, mass_per_length: 0.6, "
       "stiffness: {model: bending, bending_rigidity: 1000}, damping: {elevation: " + std::to_string(140 * n) + "}}",
       "gravity=0", "fluid.density=0",
-      "load={mode: anchored, mass: 0, fixity: clamped, coupling: {stiffness: 1e-6, damping: 0}, direction: [0, " +
+      "load={mode: anchored, anchor: spring, mass: 0, fixity: clamped, coupling: {stiffness: 1e-6, damping: 0}, direction: [0, " +
           number(-std::sin(kTurn)) + ", " + number(-std::cos(kTurn)) + "], motion: {offset: [0, " + number(-end_y) +
           ", " + number(-(end_z - kArcLength)) + "]}}",
       "simulation={integrator: implicit, dt: 0.01, rho_infinity: 0}"};

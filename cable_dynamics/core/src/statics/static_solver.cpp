@@ -141,13 +141,17 @@ bool solveWithoutContact(StaticEquations& eq, StaticNewton& newton, StaticState&
 namespace {
 
 /// The equilibrium with each link's lever l + problem.stretch (rigid links when it is empty).
+/// `reach_target`: the problem's own target (the anchor's reach is checked on it), or one an exact anchor's
+/// sweeps have shifted beyond the anchor by the hold's give (checked on `reach_target`).
 StaticSolution solveAtStretch(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
-                              const StaticOptions& options) {
+                              const StaticOptions& options, const Eigen::Vector3d* reach_target = nullptr) {
   StaticSolution out;
   out.message = refusal(model, problem, nullptr);
   if (!out.message.empty()) return out;
   StaticEquations eq(model, current, problem);
-  out.message = refusal(model, problem, &eq);
+  StaticProblem reach = problem;
+  if (reach_target != nullptr) reach.target_position = *reach_target;
+  out.message = refusal(model, reach, &eq);
   if (!out.message.empty()) return out;
 
   StaticState s;
@@ -209,7 +213,7 @@ StaticSolution solveStatics(const ChainModel& model, const CurrentField& current
   Eigen::Vector3d last_shift = Eigen::Vector3d::Zero(), last_tip = Eigen::Vector3d::Zero();
   for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
     const int iterations = out.iterations;
-    out = solveAtStretch(model, current, sweep_problem, options);
+    out = solveAtStretch(model, current, sweep_problem, options, &problem.target_position);
     out.iterations += iterations;
     out.elastic_sweeps = model.axial() ? sweep : 0;
     if (!out.converged) return out;
