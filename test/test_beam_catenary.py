@@ -1,5 +1,5 @@
 """A pinned stiff cable between two points (issue 14, end fixity): cable_sim --statics with a pinned base
-(base.fixity: pinned) and an anchored tip (the PD coupling holds a point, free to rotate) against the
+(base.fixity: pinned) and an anchored tip (held exactly at a point, free to rotate) against the
 heavy elastica solved here with scipy's boundary-value solver: an inextensible Euler-Bernoulli rod of
 bending stiffness EI under its own weight w, pinned at both ends (zero moment), in the vertical plane.
 With theta the tangent's angle from the horizontal, F(s) the force the part beyond s exerts on the part
@@ -57,8 +57,7 @@ def cable_config(links, ei=EI):
 def model_statics(tmp_path, links, ei=EI):
     return run_statics(tmp_path, f"beam_{links}_{ei}", links, cable_config(links, ei) +
                        f"base: {{fixity: pinned}}\n"
-                       f"load: {{mode: anchored, motion: {{offset: [{OFFSET[0]}, {OFFSET[1]}, {OFFSET[2]}]}}, "
-                       f"coupling: {{stiffness: 1.0e7}}}}\n")
+                       f"load: {{mode: anchored, motion: {{offset: [{OFFSET[0]}, {OFFSET[1]}, {OFFSET[2]}]}}}}\n")
 
 
 def solve_elastica(tip, ei, ends):
@@ -112,9 +111,7 @@ def test_pinned_stiff_cable_between_two_points_matches_the_heavy_elastica(tmp_pa
 
 
 def clamped_statics(tmp_path, links, base_direction, tip_direction):
-    # The default coupling (2e4 N/m: the anchor gives a few centimetres, and the elastica is solved to
-    # the tip where it is): a 1e7 N/m spring on a clamped stiff cable conditions Newton badly (938
-    # iterations against 7, measured).
+    # The exact anchor (the statics put the tip on it; the elastica is solved to the tip where it is).
     return run_statics(tmp_path, f"clamped_{links}", links, cable_config(links) +
                        f"base: {{fixity: clamped, direction: [{base_direction[0]}, 0.0, {base_direction[1]}]}}\n"
                        f"load: {{mode: anchored, fixity: clamped, direction: [{tip_direction[0]}, 0.0, {tip_direction[1]}],\n"

@@ -170,3 +170,31 @@ TEST(ExactAnchor, AMooringChainHoldsItsAnchorAtTheRecommendedStep) {
     EXPECT_GT(largest, 1e4);  // a working line
   }
 }
+
+// What an exact anchor cannot be given is refused with the key.
+TEST(ExactAnchor, WhatItCannotTakeIsRefusedWithTheKey) {
+  const std::string cable = "cable: {links: 4, length: 10.0, diameter: 0.01, mass_per_length: 1.0}\n";
+  const auto refusedKey = [&](const std::vector<std::string>& set) -> std::string {
+    try {
+      CableSimulator sim(loadConfigString(cable, set));
+    } catch (const ConfigError& e) {
+      std::cout << e.what() << "\n";
+      return e.key();
+    }
+    return "(accepted)";
+  };
+  // A coupling the hold would not use; an anchor setting on a tip that is not anchored.
+  EXPECT_EQ(refusedKey({"load.mode=anchored", "load.coupling.stiffness=1e7"}), "load.coupling");
+  EXPECT_EQ(refusedKey({"load.mode=free", "load.anchor=exact"}), "load.anchor");
+  // The dense formulation has no constraint solve.
+  EXPECT_EQ(refusedKey({"load.mode=anchored", "simulation.formulation=paper"}), "simulation.formulation");
+  // A start from the angles with the anchor 5 m from their tip.
+  EXPECT_EQ(refusedKey({"load.mode=anchored", "load.motion.offset=[5.0, 0.0, 0.0]"}), "initial.mode");
+  // Accepted: the anchor at the starting tip, or reached by the equilibrium start, or a spring anchor.
+  EXPECT_EQ(refusedKey({"load.mode=anchored"}), "(accepted)");
+  EXPECT_EQ(refusedKey({"load.mode=anchored", "load.motion.offset=[5.0, 0.0, 2.0]", "initial.mode=equilibrium"}),
+            "(accepted)");
+  EXPECT_EQ(refusedKey({"load.mode=anchored", "load.anchor=spring", "load.coupling.stiffness=1e5",
+                        "load.motion.offset=[5.0, 0.0, 0.0]"}),
+            "(accepted)");
+}

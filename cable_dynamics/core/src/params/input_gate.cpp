@@ -129,17 +129,6 @@ void checkConfigRules(const CableParams& p) {
                       "0 or equal to stiffness.elevation with model: bending (the bend spring is elevation)");
   }
   if (p.load.mode == LoadMode::kBody) checkRovBody(p);
-  if (p.load.heldExactly() && p.initial.mode != InitialMode::kEquilibrium) {
-    // The anchor is placed relative to the starting shape's tip: a start from the angles is on it only when
-    // load.motion puts it there at t = 0 (a hold that yanked the tip across would be no physics).
-    const MotionParams& m = p.load.motion;
-    const Eigen::Vector3d away = m.offset + m.amplitude * std::sin(m.phase);
-    if (away.norm() > 0.0) {
-      throw ConfigError("initial.mode", "angles",
-                        "equilibrium with an exact anchor away from the starting tip (load.motion puts it " +
-                            formatNumber(away.norm()) + " m from it at t = 0)");
-    }
-  }
   if (p.load.heldExactly() && p.simulation.formulation != Formulation::kRecursive) {
     // The dense formulation has no constraint solve, and a hold stiff enough to be exact would limit its
     // RK4 to microseconds.

@@ -8,6 +8,8 @@
 #include "cable_dynamics/dynamics/forces/axial_spring.h"
 #include "cable_dynamics/dynamics/frames.h"
 #include "cable_dynamics/dynamics/rov_body.h"
+#include "cable_dynamics/params/config_section.h"
+#include "cable_dynamics/params/format_values.h"
 #include "cable_dynamics/params/input_gate.h"
 #include "cable_dynamics/params/states.h"
 #include "cable_dynamics/simulation/winch_links.h"
@@ -51,6 +53,17 @@ void CableSimulator::reset() {
   snaps_ = 0;
   dynamics_.current() = CurrentField(params_.fluid);
   setPaperState(q, qd);
+  if (params_.load.heldExactly() && params_.initial.mode != InitialMode::kEquilibrium && use_ != SimulatorUse::kStaticsOnly) {
+    // The anchor is placed relative to the starting shape's tip: a start from the angles is on it only when
+    // load.motion puts it there at t = 0 (a hold that yanked the tip across would be no physics).
+    const MotionParams& m = params_.load.motion;
+    const Eigen::Vector3d away = m.offset + m.amplitude * std::sin(m.phase);
+    if (away.norm() > 0.0) {
+      throw ConfigError("initial.mode", "angles",
+                        "equilibrium with an exact anchor away from the starting tip (load.motion puts it " +
+                            formatNumber(away.norm()) + " m from it at t = 0)");
+    }
+  }
   if (params_.initial.mode == InitialMode::kEquilibrium) {
     const StaticSolution s = resetToEquilibrium();
     if (!s.converged) throw std::runtime_error("initial.mode = equilibrium: " + s.message);
