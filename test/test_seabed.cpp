@@ -237,7 +237,9 @@ namespace {
 std::string lyingChain(const std::string& velocity, const std::string& friction) {
   return "cable: {links: 20, length: 20.0, diameter: 0.04, mass_per_length: 2.0}\n"
          "fluid: {density: 0.0}\n"
-         "load: {mode: anchored, motion: {velocity: " + velocity + "}}\n"
+         // A spring anchor pulled along: both ends drag the straight chain (held exactly, a straight chain
+         // of rigid links between two held points has no axial freedom, and its tension no value).
+         "load: {mode: anchored, anchor: spring, motion: {velocity: " + velocity + "}}\n"
          "base: {motion: {velocity: " + velocity + "}}\n"
          "seabed: {depth: 0.01, friction: " + friction + "}\n"
          "initial: {elevation: 1.5707963267948966, azimuth: 0.0}\n"
