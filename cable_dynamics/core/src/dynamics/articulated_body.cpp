@@ -320,18 +320,62 @@ bool solveHoldForce(const ChainModel& model, ChainData& data) {
   return data.coupling.allFinite();
 }
 
-}  // namespace
-
-CABLE_HOT_PATH bool solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces) {
-  linkTermsPass(model, data.links);
+/// The backward and forward passes after linkTermsPass (solveArticulatedBody's, without the hold).
+void solvePasses(const ChainModel& model, ChainData& data, bool all_joint_forces) {
   const bool axial = model.axial();
-  if (model.heldTip() && !solveHoldForce(model, data)) return false;
-  const Vec3 base_force = axial ? backwardPass<true, false>(model, data, all_joint_forces)  // F_0
+  const Vec3 base_force = axial ? backwardPass<true, false>(model, data, all_joint_forces)
                                 : backwardPass<false, false>(model, data, all_joint_forces);
   const Vec3 tip_delta = axial ? forwardPass<true>(model, data.links) : forwardPass<false>(model, data.links);
   if (axial) stretchAccelerationPass(model, data.links, tip_delta);
   data.added_mass_power = accelerationPass(model, data.links);
   jointForcesPass(model, data, base_force, tip_delta, all_joint_forces);
+}
+
+}  // namespace
+
+bool tipVelocityProjection(const ChainModel& model, ChainData& data, const Eigen::Vector3d& velocity_change,
+                           Eigen::Matrix3Xd& omega_change, Eigen::VectorXd& stretch_rate_change) {
+  const int n = model.links(), first = model.firstLink();
+  omega_change.setZero(3, n);
+  stretch_rate_change.setZero(model.axial() ? n : 0);
+  linkTermsPass(model, data.links);
+  HoldSums sums;
+  if (model.axial()) {
+    backwardPass<true, true>(model, data, false, &sums);
+  } else {
+    backwardPass<false, true>(model, data, false, &sums);
+  }
+  // The impulse p on the load that changes the tip's velocity by `velocity_change`: -R p = dv, on R's range.
+  const Eigen::Matrix3d compliance = -0.5 * (sums.response + sums.response.transpose());
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(compliance);
+  const Eigen::Vector3d values = eigen.eigenvalues();
+  const double floor = 1e-12 * values.cwiseAbs().maxCoeff();
+  Eigen::Vector3d along = eigen.eigenvectors().transpose() * velocity_change;
+  for (int j = 0; j < 3; ++j) along(j) = values(j) > floor ? along(j) / values(j) : 0.0;
+  const Eigen::Vector3d impulse = eigen.eigenvectors() * along;
+  if (!impulse.allFinite()) return false;
+  // The links' response to it: the accelerations with the load pushed by p less those without (linear in
+  // p, every other term cancels), as velocity changes (an impulse over unit time).
+  solvePasses(model, data, false);
+  for (int k = first; k < n; ++k) {
+    omega_change.col(k) = -data.links.get(&LinkBlock::omega_rate, k);
+    if (model.axial()) stretch_rate_change(k) = -data.links.of(k).stretch_acc[LinkBlocks::lane(k)];
+  }
+  data.load_external += impulse;
+  solvePasses(model, data, false);
+  data.load_external -= impulse;
+  for (int k = first; k < n; ++k) {
+    omega_change.col(k) += data.links.get(&LinkBlock::omega_rate, k);
+    if (model.axial()) stretch_rate_change(k) += data.links.of(k).stretch_acc[LinkBlocks::lane(k)];
+  }
+  return omega_change.allFinite() && stretch_rate_change.allFinite();
+}
+
+CABLE_HOT_PATH bool solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces) {
+  linkTermsPass(model, data.links);
+  if (model.heldTip() && !solveHoldForce(model, data)) return false;
+  solvePasses(model, data, all_joint_forces);
   return true;
 }
 

@@ -205,6 +205,22 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
   return true;
 }
 
+bool ChainDynamics::matchTipVelocity(Eigen::VectorXd& x, const EndInputs& ends) {
+  computeLoads(x, ends);
+  const Eigen::Vector3d change = ends.target_velocity - data_.tip_velocity;
+  if (!(change.norm() > 0.0)) return change.allFinite();
+  Eigen::Matrix3Xd omega_change;
+  Eigen::VectorXd stretch_rate_change;
+  if (!tipVelocityProjection(model_, data_, change, omega_change, stretch_rate_change)) return false;
+  const int n = links();
+  const bool body = model_.body().active;
+  for (int k = model_.firstLink(); k < n; ++k) {
+    x.segment<3>(StateLayout::omega(k)) += omega_change.col(k);
+    if (model_.axial()) x(StateLayout::stretchRate(n, body, k)) += stretch_rate_change(k);
+  }
+  return true;
+}
+
 void ChainDynamics::computeLoads(const Eigen::VectorXd& x, const EndInputs& ends) {
   applyEnds(ends);
   computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them

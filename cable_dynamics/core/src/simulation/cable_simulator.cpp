@@ -67,6 +67,8 @@ void CableSimulator::reset() {
   if (params_.initial.mode == InitialMode::kEquilibrium) {
     const StaticSolution s = resetToEquilibrium();
     if (!s.converged) throw std::runtime_error("initial.mode = equilibrium: " + s.message);
+  } else if (params_.load.heldExactly() && use_ != SimulatorUse::kStaticsOnly) {
+    dynamics_.matchTipVelocity(x_, ends_.at(time_));  // as resetToEquilibrium: a base that starts moving
   }
   watchStretches(false);  // the start's slack links and tension
   commanded_thrust_.setZero();
@@ -146,6 +148,9 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   if (!s.converged) return s;
   const int n = links();
   setRestState(s, x_);
+  // A base that starts moving under the chain at rest moves the tip with it: the exact anchor's start is
+  // corrected by the impulse that keeps the tip with the anchor (the least kinetic energy that does).
+  if (params_.load.heldExactly()) dynamics_.matchTipVelocity(x_, ends);
   // The implicit steps' spring hold starts with the anchor's reaction, its rest point beyond the anchor, so
   // that the run starts with the tip on the anchor and no transient; it then gives by the change of the
   // anchor's force over k_h (moving its rest point after each step by the tip's miss, an integral action,

@@ -17,4 +17,12 @@ namespace cable_dynamics {
 /// tip data.tip_demand. Returns false when that force is not finite.
 bool solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces);
 
+/// The change of the links' angular velocities (3 x n) [rad/s] and stretch rates (n; empty with rigid links)
+/// [m/s] that an impulse on the load gives, the impulse chosen to change the tip's velocity by
+/// `velocity_change` [m/s] (on the directions the chain can move its tip in): the least-kinetic-energy
+/// correction of a start whose tip does not move with its anchor (a base that starts moving under a chain at
+/// rest). At the loads `data` holds (ChainDynamics::computeLoads). Three passes; allocates (starts only).
+bool tipVelocityProjection(const ChainModel& model, ChainData& data, const Eigen::Vector3d& velocity_change,
+                           Eigen::Matrix3Xd& omega_change, Eigen::VectorXd& stretch_rate_change);
+
 }  // namespace cable_dynamics

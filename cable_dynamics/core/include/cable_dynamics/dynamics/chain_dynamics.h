@@ -102,6 +102,11 @@ class ChainDynamics {
   /// Accelerations, forces along the cable and energies at x. Returns false like derivative().
   bool evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out);
 
+  /// A start whose tip does not move with an exact anchor (ends.target_velocity): x's angular velocities and
+  /// stretch rates corrected by the impulse on the tip that makes it (tipVelocityProjection). Returns false
+  /// when the correction is not finite (x is then unchanged). Allocates: for starts, not for steps.
+  bool matchTipVelocity(Eigen::VectorXd& x, const EndInputs& ends);
+
   /// The passes before the solver at x (kinematics, external loads, joint springs and dampers) into
   /// data(), and the ends' clamp: what the implicit integrator's own recursion reads. O(n), no allocation.
   void computeLoads(const Eigen::VectorXd& x, const EndInputs& ends);
