@@ -175,6 +175,22 @@ TEST(NoAllocation, AxialElasticity) {
                       "cable.stiffness={model: bending, bending_rigidity: 50.0}", "seabed={depth: 15.0}"});
 }
 
+TEST(NoAllocation, ExactAnchor) {
+  // The exact anchor (docs/MODEL.md section 14): RK4's hold (a second backward pass and a 3x3 eigen-solve
+  // in every evaluation), with and without the stretch; the implicit step's internal hold. The anchor 6 m
+  // out and 4 m up from the straight-down tip: the heaving base pulls a sagging line (a straight one between
+  // two held points could not follow the heave).
+  const std::vector<std::string> anchored = {"load.mode=anchored", "load.motion.offset=[6.0, 0.0, 4.0]",
+                                             "initial.mode=equilibrium"};
+  std::vector<std::string> o = anchored;
+  expectNoAllocation(o);
+  o.insert(o.end(), {"cable.axial_stiffness=2.0e5", "simulation.dt=0.0002"});
+  expectNoAllocation(o);
+  o = anchored;
+  o.insert(o.end(), {"simulation.integrator=implicit", "simulation.dt=0.01"});
+  expectNoAllocation(o);
+}
+
 TEST(NoAllocation, LimitsInTheSnapshot) {
   // The limits (dynamics/cable_limits.h) are computed in every snapshot, which cable_sim and the node take
   // each sample or cycle: bend radii against both clamps, utilisation with a tension and a per-section bend

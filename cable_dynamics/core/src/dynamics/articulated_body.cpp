@@ -299,23 +299,34 @@ void stretchAccelerationPass(const ChainModel& model, LinkBlocks& links, const V
 /// a_free - R f with R = dd_n/dF_n; R is inverted on its range (a direction the chain cannot move the tip
 /// in, such as along a straight chain of rigid links, gets no force). Into data.coupling and load_external.
 /// Returns false when the sums are not finite.
-bool solveHoldForce(const ChainModel& model, ChainData& data) {
+HoldSums holdSums(const ChainModel& model, ChainData& data) {
   HoldSums sums;
   if (model.axial()) {
     backwardPass<true, true>(model, data, false, &sums);
   } else {
     backwardPass<false, true>(model, data, false, &sums);
   }
+  return sums;
+}
+
+/// The force f on the load that changes the tip's acceleration by `change` [m/s^2]: -R f = change, R being
+/// sums.response, solved on R's range (its eigenvalues below 1e-12 of the largest: no force).
+Eigen::Vector3d tipForceFor(const HoldSums& sums, const Eigen::Vector3d& change) {
   const Eigen::Matrix3d compliance = -0.5 * (sums.response + sums.response.transpose());  // [1/kg]
-  const Eigen::Vector3d shortfall = data.tip_demand - (data.tip_known_acc + sums.tip_delta);
-  if (!compliance.allFinite() || !shortfall.allFinite()) return false;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
   eigen.computeDirect(compliance);
   const Eigen::Vector3d values = eigen.eigenvalues();
   const double floor = 1e-12 * values.cwiseAbs().maxCoeff();
-  Eigen::Vector3d along = eigen.eigenvectors().transpose() * shortfall;
+  Eigen::Vector3d along = eigen.eigenvectors().transpose() * change;
   for (int j = 0; j < 3; ++j) along(j) = values(j) > floor ? along(j) / values(j) : 0.0;
-  data.coupling = eigen.eigenvectors() * along;
+  return eigen.eigenvectors() * along;
+}
+
+bool solveHoldForce(const ChainModel& model, ChainData& data) {
+  const HoldSums sums = holdSums(model, data);
+  const Eigen::Vector3d shortfall = data.tip_demand - (data.tip_known_acc + sums.tip_delta);
+  if (!sums.response.allFinite() || !shortfall.allFinite()) return false;
+  data.coupling = tipForceFor(sums, shortfall);
   data.load_external += data.coupling;
   return data.coupling.allFinite();
 }
@@ -339,21 +350,9 @@ bool tipVelocityProjection(const ChainModel& model, ChainData& data, const Eigen
   omega_change.setZero(3, n);
   stretch_rate_change.setZero(model.axial() ? n : 0);
   linkTermsPass(model, data.links);
-  HoldSums sums;
-  if (model.axial()) {
-    backwardPass<true, true>(model, data, false, &sums);
-  } else {
-    backwardPass<false, true>(model, data, false, &sums);
-  }
-  // The impulse p on the load that changes the tip's velocity by `velocity_change`: -R p = dv, on R's range.
-  const Eigen::Matrix3d compliance = -0.5 * (sums.response + sums.response.transpose());
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-  eigen.computeDirect(compliance);
-  const Eigen::Vector3d values = eigen.eigenvalues();
-  const double floor = 1e-12 * values.cwiseAbs().maxCoeff();
-  Eigen::Vector3d along = eigen.eigenvectors().transpose() * velocity_change;
-  for (int j = 0; j < 3; ++j) along(j) = values(j) > floor ? along(j) / values(j) : 0.0;
-  const Eigen::Vector3d impulse = eigen.eigenvectors() * along;
+  // The impulse p on the load that changes the tip's velocity by `velocity_change`: -R p = dv (an impulse
+  // is a force over unit time).
+  const Eigen::Vector3d impulse = tipForceFor(holdSums(model, data), velocity_change);
   if (!impulse.allFinite()) return false;
   // The links' response to it: the accelerations with the load pushed by p less those without (linear in
   // p, every other term cancels), as velocity changes (an impulse over unit time).
