@@ -10,9 +10,12 @@ namespace cable_dynamics {
 /// saw the node's XML-RPC client shut under it and printed "[setParam] Failed to contact master ...
 /// Retrying..." as an ERROR on the user's screen (1 stop in 12 of the demo, measured).
 ///
-/// So the node installs this handler instead (ros::init_options::NoSigintHandler): it only records the
+/// So the node takes SIGINT itself instead (ros::init_options::NoSigintHandler): it only records the
 /// stop; spinUntilStopped() runs the callbacks until then and shuts ROS down from the spinner thread itself,
-/// between callbacks. Code that talks to the master also checks stopRequested() first.
+/// between callbacks. Code that talks to the master also checks stopRequested() first. SIGINT is blocked
+/// in every thread but one that waits for it (sigwait): a signal delivered to a thread in a master call
+/// broke its select() with EINTR, and the client printed the same ERROR before reconnecting (CI, 2026-12-03).
+/// Call it after ros::init and before the first NodeHandle (roscpp's threads inherit the signal mask).
 void installStopOnSigint();
 
 /// Runs the global callback queue's callbacks until SIGINT or ros::shutdown(), then shuts ROS down.
