@@ -115,11 +115,12 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
     const int i = LinkBlocks::lane(k);
     // The lever from the base end to the far end, l (+ s with axial elasticity).
     const double l = kAxial ? c.length[i] + block.stretch[i] : c.length[i];
-    const Symmetric3 child_before_axial = child;  // the held sums' u^T M u (unused otherwise)
+    double stretch_inverse = 0.0;  // 1 / (u^T M u) of the stretch's elimination (0 when rigid or locked)
     if (kAxial) {
       const bool locked = model.stretchLocked(k);
       const Vec3 u = block.u[i], m_u = child * u;
       const double inverse = locked ? 0.0 : 1.0 / dot(u, m_u);
+      stretch_inverse = inverse;
       const double bias = inverse * (block.axial_tension[i] + dot(u, child_force));
       block.stretch_gain.set(i, inverse * m_u);
       block.stretch_bias[i] = bias;
@@ -173,7 +174,7 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
       if (kAxial) {
         gain = toEigen(block.stretch_gain[i]);  // g = M u / (u^T M u): P v = v - u (g . v)
         bias = block.stretch_bias[i];
-        inverse = model.stretchLocked(k) ? 0.0 : 1.0 / dot(block.u[i], child_before_axial * block.u[i]);
+        inverse = stretch_inverse;
         pp -= gain.dot(p) * u;
         pr -= gain.dot(r) * u;
       }
