@@ -115,7 +115,7 @@ TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
       for (int k = 1; k <= n; ++k) {
         base[k] = base[k - 1];
         const Eigen::Vector3d u = data.links.get(&LinkBlock::u, k - 1);
-        base[k].block<3, 3>(0, 3 * (k - 1)) += -f.model().get(&LinkConstants::length, k - 1) * skew(u);
+        base[k].block<3, 3>(0, 3 * (k - 1)) += -f.deployed().get(&LinkConstants::length, k - 1) * skew(u);
       }
       Eigen::MatrixXd damping = Eigen::MatrixXd::Zero(dof, dof), stiffness = Eigen::MatrixXd::Zero(dof, dof);
       int contacts = 0;
@@ -172,7 +172,7 @@ TEST(ImplicitRecursion, WeightsSolveTheDenseEffectiveSystem) {
       f.computeLoads(x, ends);
       solver.linearize(f.model(), f.data(), ends);
       solver.clearExtra();
-      solver.addJacobianTimes(f.model(), a, b, rotation, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), translation, tip);
+      solver.addJacobianTimes(f.model(), f.data(), a, b, rotation, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), translation, tip);
       solver.solve(f.model(), f.data(), cd, ck);
       double error = 0.0;
       for (int k = 0; k < n; ++k) error = std::max(error, (solver.link(k).angular_acc - dense.segment<3>(3 * k)).norm());
@@ -204,7 +204,7 @@ TEST(ImplicitRecursion, DragDampingIsTheDragsVelocityJacobian) {
   solver.linearize(f.model(), f.data(), ends);
   const StiffLinkTerms& t = solver.link(k);
   const Eigen::Vector3d u = f.data().links.get(&LinkBlock::u, k), prev = f.data().links.get(&LinkBlock::u, k - 1);
-  const double l_prev = f.model().get(&LinkConstants::length, k - 1), eps = 1e-6;
+  const double l_prev = f.deployed().get(&LinkConstants::length, k - 1), eps = 1e-6;
   // The wrench on link k about its base end: torque u x moment, force.
   const auto wrench = [&](const Eigen::VectorXd& state) {
     f.computeLoads(state, ends);
@@ -256,7 +256,7 @@ TEST(ImplicitRecursion, SeabedStiffnessIsTheContactForcesRotationJacobian) {
     double deepest = 0.0;
     for (int k = 0; k < n; ++k) {
       const Eigen::Vector3d base = free.data().links.get(&LinkBlock::base_pos, k);
-      const double l = free.model().get(&LinkConstants::length, k), uz = free.data().links.get(&LinkBlock::u, k).z();
+      const double l = free.deployed().get(&LinkConstants::length, k), uz = free.data().links.get(&LinkBlock::u, k).z();
       for (int j = 0; j < 4; ++j) deepest = std::max(deepest, base.z() + (j + 0.5) / 4.0 * l * uz);  // the contact points
     }
     deepest = std::max(deepest, free.data().tip_position.z());  // and the load's
@@ -299,7 +299,7 @@ TEST(ImplicitRecursion, SeabedStiffnessIsTheContactForcesRotationJacobian) {
       contact << solver.contact(k).rr, solver.contact(k).rv, solver.contact(k).rv.transpose(), solver.contact(k).vv;
       assembled += spatial.transpose() * contact * spatial;
       contacts += t.in_contact ? 1 : 0;
-      base.block<3, 3>(0, 3 * k) += -bed.model().get(&LinkConstants::length, k) * skew(t.axis);
+      base.block<3, 3>(0, 3 * k) += -bed.deployed().get(&LinkConstants::length, k) * skew(t.axis);
     }
     assembled += base.transpose() * solver.loadContactStiffness() * base;  // base: the tip's Jacobian now
     contacts += solver.loadContactStiffness().norm() > 0.0 ? 1 : 0;

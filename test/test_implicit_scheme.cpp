@@ -59,7 +59,7 @@ TEST(ImplicitScheme, SingleModeAmplificationIsRos2s) {
           "load: {mass: 0.0, volume: 0.0}\nfluid: {density: 0.0}\ngravity: 0.0\n"
           "initial: {elevation: 1.0e-4}\nsimulation: {integrator: implicit, dt: 0.001}\n",
           {"simulation.rho_infinity=" + std::to_string(rho)});
-      const double inertia = CableSimulator(p).dynamics().model().get(&LinkConstants::own_transverse, 0);
+      const double inertia = CableSimulator(p).dynamics().deployed().get(&LinkConstants::own_transverse, 0);
       const double omega = std::sqrt(CableSimulator(p).properties().stiffness_elevation(0) / inertia);
       p.simulation.dt = wh / omega;
       CableSimulator sim(p);

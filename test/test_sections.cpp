@@ -46,7 +46,7 @@ double weightBelow(double s, const std::vector<std::pair<double, double>>& point
 
 StaticSolution solveFree(ChainDynamics& chain) {
   StaticProblem problem;
-  const StaticSolution s = solveStatics(chain.model(), chain.current(), problem);
+  const StaticSolution s = solveStatics(chain.model(), chain.deployed(), chain.current(), problem);
   EXPECT_TRUE(s.converged) << s.message;
   return s;
 }
@@ -270,7 +270,7 @@ TEST(Attachments, LazyWaveMatchesThePiecewiseCatenaryAndFloatsLiftByTheirBuoyanc
   StaticProblem problem;
   problem.tip_coupled = true;
   problem.target_position = Eigen::Vector3d(60.0, 0.0, 50.0);
-  const StaticSolution s = solveStatics(chain.model(), chain.current(), problem);
+  const StaticSolution s = solveStatics(chain.model(), chain.deployed(), chain.current(), problem);
   std::cout << "lazy wave statics: converged " << s.converged << " in " << s.iterations << " iterations, residual "
             << s.residual << " " << s.message << "\n";
   ASSERT_TRUE(s.converged) << s.message;

@@ -27,7 +27,7 @@ CableParams cable(double length, int n, const std::vector<std::string>& extra) {
 
 /// Solves with the dynamics' own model and current, prints the iterations, and checks convergence.
 StaticSolution solve(ChainDynamics& chain, const StaticProblem& problem, const char* name, int most_iterations = 30) {
-  const StaticSolution s = solveStatics(chain.model(), chain.current(), problem);
+  const StaticSolution s = solveStatics(chain.model(), chain.deployed(), chain.current(), problem);
   std::cout << name << ": converged " << s.converged << " in " << s.iterations << " Newton iterations, residual "
             << s.residual << (s.message.empty() ? "" : ", ") << s.message << "\n";
   EXPECT_TRUE(s.converged) << s.message;
@@ -266,7 +266,7 @@ TEST(Statics, TargetOutOfReachHasNoEquilibrium) {
   StaticProblem problem;
   problem.tip_coupled = true;
   problem.target_position = Eigen::Vector3d(100.0, 0.0, 60.0);
-  const StaticSolution s = solveStatics(chain.model(), chain.current(), problem);
+  const StaticSolution s = solveStatics(chain.model(), chain.deployed(), chain.current(), problem);
   std::cout << "out of reach: " << s.message << "\n";
   EXPECT_FALSE(s.converged);
   EXPECT_NE(s.message.find("no equilibrium"), std::string::npos);
@@ -275,7 +275,7 @@ TEST(Statics, TargetOutOfReachHasNoEquilibrium) {
 
 TEST(Statics, PaperSpringsAreRefused) {
   ChainDynamics chain(cable(10.0, 5, {"cable.stiffness={model: paper, elevation: 10}"}));
-  const StaticSolution s = solveStatics(chain.model(), chain.current(), StaticProblem());
+  const StaticSolution s = solveStatics(chain.model(), chain.deployed(), chain.current(), StaticProblem());
   EXPECT_FALSE(s.converged);
   EXPECT_NE(s.message.find("paper"), std::string::npos);
 }
@@ -304,7 +304,7 @@ TEST(Statics, LargeDeflectionCantileverIsAnEquilibriumOfTheDynamics) {
   // droops to hang nearly down: far from the straight start, so Newton may need the continuation.
   ChainDynamics chain(cable(10.0, 40, {"cable.stiffness={model: bending, bending_rigidity: 20, torsional_rigidity: 10}",
                                        "fluid.density=0", "base.direction=[1, 0, 0]"}));
-  const StaticSolution s = solveStatics(chain.model(), chain.current(), StaticProblem());
+  const StaticSolution s = solveStatics(chain.model(), chain.deployed(), chain.current(), StaticProblem());
   std::cout << "large deflection: converged " << s.converged << " in " << s.iterations << " iterations, residual "
             << s.residual << ", tip " << s.tip_position.transpose() << " m " << s.message << "\n";
   ASSERT_TRUE(s.converged) << s.message;

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
         if (stiff) o.push_back("cable.stiffness={model: bending, bending_rigidity: 200, torsional_rigidity: 100}");
         const CableParams params = loadConfigFile(config, o);
         const ChainModel model(params);
+        const ChainDeployment deployed = model.initialDeployment();
         const CurrentField current(params.fluid);
         StaticProblem problem;
         problem.tip_coupled = coupled;
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
         StaticSolution s;
         for (int rep = 0; rep < 7; ++rep) {
           const auto start = std::chrono::steady_clock::now();
-          s = solveStatics(model, current, problem);
+          s = solveStatics(model, deployed, current, problem);
           times.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         }
         std::nth_element(times.begin(), times.begin() + 3, times.end());

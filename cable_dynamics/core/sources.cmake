@@ -17,6 +17,7 @@ set(CABLE_CORE_SOURCES
   ${CABLE_CORE_DIR}/src/dynamics/paper_model.cpp
   ${CABLE_CORE_DIR}/src/dynamics/elastic_joints.cpp
   ${CABLE_CORE_DIR}/src/dynamics/fluid.cpp
+  ${CABLE_CORE_DIR}/src/dynamics/chain_deployment.cpp
   ${CABLE_CORE_DIR}/src/dynamics/chain_model.cpp
   ${CABLE_CORE_DIR}/src/dynamics/chain_data.cpp
   ${CABLE_CORE_DIR}/src/dynamics/paper_coordinates.cpp

@@ -517,8 +517,7 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
 }
 
 bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Response& res) {
-  if (!checkResetRequest(req.positions, req.velocities, params_.links, names_, res.message,
-                         params_.winch.enabled ? params_.winch.stored_links : 0)) {
+  if (!checkResetRequest(req.positions, req.velocities, params_.links, names_, res.message, params_.drumSlots())) {
     res.success = false;
     return true;
   }

@@ -212,7 +212,7 @@ void prepareOutputs(const CableParams& params, const CableFrameNames& names, con
   out.stowed_joint_names.reserve(dof);
   out.stowed_transforms.clear();
   out.stowed_transforms.reserve(dof);
-  shapeOutputs(params.winch.enabled ? params.winch.stored_links : 0, out);
+  shapeOutputs(params.drumSlots(), out);
 }
 
 void shapeOutputs(int first_link, CableOutputs& out) {

@@ -42,9 +42,9 @@ inline void normalPlaneBasis(const Vec3& u, Vec3& e1, Vec3& e2) {
 /// What each link contributes on its own: its plane basis, inertia and bias (velocity terms: the
 /// centripetal beta = u'' at zero angular acceleration and the gyroscopic torque; the known
 /// acceleration; minus the external forces). Every link alike: the loop runs over a block's lanes.
-EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainModel& model, LinkBlocks& links) {
-  for (int b = model.firstBlock(); b < links.blocks(); ++b) {
-    const LinkConstants& c = model.block(b);
+EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainDeployment& deployed, LinkBlocks& links) {
+  for (int b = deployed.firstBlock(); b < links.blocks(); ++b) {
+    const LinkConstants& c = deployed.block(b);
     LinkBlock& block = links.block(b);
     CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
@@ -109,8 +109,8 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
     child = {child.xx + m(0, 0), m(0, 1), m(0, 2), child.yy + m(1, 1), m(1, 2), child.zz + m(2, 2)};
     child_force = child_force + toVec3(m * data.tip_known_acc + data.body.tip_bias);
   }
-  for (int k = model.links() - 1; k >= model.firstLink(); --k) {
-    const LinkConstants& c = model.of(k);
+  for (int k = model.links() - 1; k >= data.deployed.firstLink(); --k) {
+    const LinkConstants& c = data.deployed.of(k);
     LinkBlock& block = data.links.of(k);
     const int i = LinkBlocks::lane(k);
     // The lever from the base end to the far end, l (+ s with axial elasticity).
@@ -201,13 +201,13 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
 /// T_k d_k + c_k (g, b: the backward pass's stretch_gain and stretch_bias): P = I - u g^T folds into
 /// T_k and c_k, so the serial pass is unchanged.
 template <bool kAxial>
-EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links) {
-  const int n = model.links(), first = model.firstLink();
+EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, const ChainDeployment& deployed, LinkBlocks& links) {
+  const int n = model.links(), first = deployed.firstLink();
   Vec3 d = {0.0, 0.0, 0.0};  // the base translates as prescribed: d_0 = 0
   // The drum's slots (a winch) take no part: their d stays 0 (their rates are not used).
   for (int k = 0; k < first; ++k) links.of(k).delta_acc.set(LinkBlocks::lane(k), d);
   for (int b = first / kBlockLanes; b < links.blocks(); ++b) {
-    const LinkConstants& c = model.block(b);
+    const LinkConstants& c = deployed.block(b);
     LinkBlock& block = links.block(b);
     Lanes3 row_x, row_y, row_z, offset;  // T_k's rows and c_k
     for (int i = 0; i < kBlockLanes; ++i) {
@@ -241,10 +241,10 @@ EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, LinkBlocks& links)
 }
 
 /// On vectors again, what follows from d_k: angular accelerations and the added-mass power [W].
-EIGEN_ALWAYS_INLINE double accelerationPass(const ChainModel& model, LinkBlocks& links) {
+EIGEN_ALWAYS_INLINE double accelerationPass(const ChainDeployment& deployed, LinkBlocks& links) {
   double power[kBlockLanes] = {};
-  for (int b = model.firstBlock(); b < links.blocks(); ++b) {
-    const LinkConstants& c = model.block(b);
+  for (int b = deployed.firstBlock(); b < links.blocks(); ++b) {
+    const LinkConstants& c = deployed.block(b);
     LinkBlock& block = links.block(b);
     CABLE_LANE_LOOP
     for (int i = 0; i < kBlockLanes; ++i) {
@@ -266,7 +266,7 @@ EIGEN_ALWAYS_INLINE double accelerationPass(const ChainModel& model, LinkBlocks&
 /// J_k = M_k d_k + F_k; at the base link (firstLink()) d = 0: J = F. The load's force from the tip's acceleration.
 EIGEN_ALWAYS_INLINE void jointForcesPass(const ChainModel& model, ChainData& data, const Vec3& base_force,
                                          const Vec3& tip_delta, bool all_joint_forces) {
-  const int first = model.firstLink();
+  const int first = data.deployed.firstLink();
   data.joint_force.leftCols(first).setZero();  // the drum's slots (a winch)
   data.joint_force.col(first) = toEigen(base_force);
   for (int k = first + 1; all_joint_forces && k < model.links(); ++k) {
@@ -284,9 +284,9 @@ EIGEN_ALWAYS_INLINE void jointForcesPass(const ChainModel& model, ChainData& dat
 
 /// With axial elasticity: s''_k = u_k . (d_{k+1} - d_k), the part of the far end's acceleration along the
 /// link that its rotation does not give (d_n: the tip's).
-void stretchAccelerationPass(const ChainModel& model, LinkBlocks& links, const Vec3& tip_delta) {
+void stretchAccelerationPass(const ChainModel& model, const ChainDeployment& deployed, LinkBlocks& links, const Vec3& tip_delta) {
   const int n = model.links();
-  for (int k = model.firstLink(); k < n; ++k) {
+  for (int k = deployed.firstLink(); k < n; ++k) {
     LinkBlock& block = links.of(k);
     const int i = LinkBlocks::lane(k);
     const Vec3 next = k + 1 < n ? links.of(k + 1).delta_acc[LinkBlocks::lane(k + 1)] : tip_delta;
@@ -337,9 +337,9 @@ void solvePasses(const ChainModel& model, ChainData& data, bool all_joint_forces
   const bool axial = model.axial();
   const Vec3 base_force = axial ? backwardPass<true, false>(model, data, all_joint_forces)
                                 : backwardPass<false, false>(model, data, all_joint_forces);
-  const Vec3 tip_delta = axial ? forwardPass<true>(model, data.links) : forwardPass<false>(model, data.links);
-  if (axial) stretchAccelerationPass(model, data.links, tip_delta);
-  data.added_mass_power = accelerationPass(model, data.links);
+  const Vec3 tip_delta = axial ? forwardPass<true>(model, data.deployed, data.links) : forwardPass<false>(model, data.deployed, data.links);
+  if (axial) stretchAccelerationPass(model, data.deployed, data.links, tip_delta);
+  data.added_mass_power = accelerationPass(data.deployed, data.links);
   jointForcesPass(model, data, base_force, tip_delta, all_joint_forces);
 }
 
@@ -347,10 +347,10 @@ void solvePasses(const ChainModel& model, ChainData& data, bool all_joint_forces
 
 bool tipVelocityProjection(const ChainModel& model, ChainData& data, const Eigen::Vector3d& velocity_change,
                            Eigen::Matrix3Xd& omega_change, Eigen::VectorXd& stretch_rate_change) {
-  const int n = model.links(), first = model.firstLink();
+  const int n = model.links(), first = data.deployed.firstLink();
   omega_change.setZero(3, n);
   stretch_rate_change.setZero(model.axial() ? n : 0);
-  linkTermsPass(model, data.links);
+  linkTermsPass(data.deployed, data.links);
   // The impulse p on the load that changes the tip's velocity by `velocity_change`: -R p = dv (an impulse
   // is a force over unit time).
   const Eigen::Vector3d impulse = tipForceFor(holdSums(model, data), velocity_change);
@@ -373,7 +373,7 @@ bool tipVelocityProjection(const ChainModel& model, ChainData& data, const Eigen
 }
 
 CABLE_HOT_PATH bool solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces) {
-  linkTermsPass(model, data.links);
+  linkTermsPass(data.deployed, data.links);
   if (model.heldTip() && !solveHoldForce(model, data)) return false;
   solvePasses(model, data, all_joint_forces);
   return true;

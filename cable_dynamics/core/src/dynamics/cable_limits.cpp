@@ -7,8 +7,8 @@ namespace cable_dynamics {
 namespace {
 
 /// Link k's length along its axis now [m]: its own (the winch's link: as paid out) plus its stretch.
-double stretchedLength(const ChainModel& model, const LinkBlocks& links, int k) {
-  const double l = model.get(&LinkConstants::length, k);
+double stretchedLength(const ChainModel& model, const ChainDeployment& deployed, const LinkBlocks& links, int k) {
+  const double l = deployed.get(&LinkConstants::length, k);
   return model.axial() ? l + links.get(&LinkBlock::stretch, k) : l;
 }
 
@@ -25,9 +25,9 @@ double largestTension(const ChainData& data, const Eigen::VectorXd& tension, con
 
 void reportLimits(const ChainModel& model, const ChainData& data, const Eigen::VectorXd& tension,
                   const Eigen::Vector3d& load_force, const SeabedReport* seabed, LimitReport& report) {
-  const LinkProperties& p = model.properties();
+  const LinkProperties& p = data.deployed.properties();
   const LinkBlocks& links = data.links;
-  const int n = model.links(), first = model.firstLink();
+  const int n = model.links(), first = data.deployed.firstLink();
   // Every scalar back to its default; the two vectors move through the fresh report and back, so their
   // buffers are kept (no allocation once sized).
   report = LimitReport{std::move(report.bend_radius), std::move(report.utilisation)};
@@ -44,17 +44,17 @@ void reportLimits(const ChainModel& model, const ChainData& data, const Eigen::V
     if (k > first) {
       const Eigen::Vector3d prev = links.get(&LinkBlock::u, k - 1).normalized();
       report.bend_radius(k) =
-          jointBendRadius(stretchedLength(model, links, k - 1), stretchedLength(model, links, k), (prev - u).norm());
+          jointBendRadius(stretchedLength(model, data.deployed, links, k - 1), stretchedLength(model, data.deployed, links, k), (prev - u).norm());
     } else if (p.clamped_base) {
       const Eigen::Vector3d clamp = data.clamp_axis.normalized();
-      report.bend_radius(k) = clampBendRadius(stretchedLength(model, links, k), clamp.cross(u).norm(), clamp.dot(u));
+      report.bend_radius(k) = clampBendRadius(stretchedLength(model, data.deployed, links, k), clamp.cross(u).norm(), clamp.dot(u));
     }
   }
   // The tip's clamp bends the last link at its far end.
   double tip_radius = LimitReport::kStraight;
   if (p.clamped_tip) {
     const Eigen::Vector3d u = links.get(&LinkBlock::u, n - 1).normalized(), clamp = data.tip_clamp_axis.normalized();
-    tip_radius = clampBendRadius(stretchedLength(model, links, n - 1), clamp.cross(u).norm(), clamp.dot(u));
+    tip_radius = clampBendRadius(stretchedLength(model, data.deployed, links, n - 1), clamp.cross(u).norm(), clamp.dot(u));
   }
 
   const bool tension_limit = p.max_tension > 0.0;

@@ -17,7 +17,7 @@ void DenseWorkspace::allocate(int n) {
 }
 
 ChainData::ChainData(const ChainModel& model)
-    : links(model.links()), current(FluidParams{}), azimuths(model.links()) {
+    : deployed(model.initialDeployment()), links(model.links()), current(FluidParams{}), azimuths(model.links()) {
   const int n = model.links();
   // Every lane starts as a finite link along the vertical: the padding lanes stay so (the kinematics
   // normalize every lane's axis), and zero in everything else.
@@ -26,8 +26,8 @@ ChainData::ChainData(const ChainModel& model)
     for (int i = 0; i < kBlockLanes; ++i) links.block(b).u.set(i, {0.0, 0.0, 1.0});
   }
   for (Eigen::Matrix3Xd* m : {&joint_force, &spring_torque, &damping_torque}) m->setZero(3, n);
-  clamp_axis = model.properties().clamp_axis;
-  clamp_twist = model.properties().clamp_twist;
+  clamp_axis = model.configured().clamp_axis;
+  clamp_twist = model.configured().clamp_twist;
   paper_q.setZero(3 * n);
   paper_qd.setZero(3 * n);
   paper_psi.setZero(n);

@@ -45,26 +45,21 @@ ChainDynamics::ChainDynamics(const CableParams& params) : model_(params), data_(
 }
 
 void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
-  cable_dynamics::followAzimuths(links(), x, data_.azimuths, model_.firstLink());
+  cable_dynamics::followAzimuths(links(), x, data_.azimuths, data_.deployed.firstLink());
 }
 
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {
-  if (!allFinite(x.tail(StateLayout::moving(x.size(), model_.firstLink())))) return false;  // what the passes read
-  applyEnds(ends);
-  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
-  computeKinematics(model_, data_, x, ends);
-  computeBodyTerms(x, ends);
-  computeExternalLoads(model_, data_, ends);
-  computeJointTorques(model_, data_, x);
+  if (!allFinite(x.tail(StateLayout::moving(x.size(), data_.deployed.firstLink())))) return false;  // what the passes read
+  forwardPass(x, ends, Stage::kLoads);
   if (model_.formulation() == Formulation::kRecursive) {
     if (!solveArticulatedBody(model_, data_, all_joint_forces)) return false;
   } else {
     if (!solveDense(model_, data_)) return false;  // its workspace: allocated by ChainData for this formulation
   }
-  if (!finiteAngularAccelerations(data_.links, model_.firstBlock())) return false;
+  if (!finiteAngularAccelerations(data_.links, data_.deployed.firstBlock())) return false;
   // What the base (through the force it holds the base link's end with), the coupling, the clamps and a
   // winch's paid-out cable put in.
-  data_.input_power = endsInputPower(model_, data_, ends, data_.joint_force.col(model_.firstLink()));
+  data_.input_power = endsInputPower(model_, data_, ends, data_.joint_force.col(data_.deployed.firstLink()));
   return true;
 }
 
@@ -76,7 +71,7 @@ bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndI
   const Eigen::Vector3d axis = data_.links.get(&LinkBlock::u, joint).normalized();
   const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
   const auto relative = [&](const Eigen::Vector3d& torque, Eigen::Vector2d& out) {
-    model_.holdJoint(joint, torque, 0.0, ends.time, ends.winch_deployed, span);
+    data_.deployed.holdJoint(joint, torque, 0.0, ends.time, ends.winch_deployed, span);
     if (!solve(x, ends, false)) return false;
     const Eigen::Vector3d a =
         data_.links.get(&LinkBlock::omega_rate, joint) - data_.links.get(&LinkBlock::omega_rate, joint - 1);
@@ -97,7 +92,7 @@ bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndI
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(0.5 * (inverse + inverse.transpose()), Eigen::EigenvaluesOnly);
   const double across = eigen.eigenvalues()(0);
   ok = ok && held.allFinite() && std::isfinite(across) && across > 0.0;
-  model_.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ok ? damping_rate * across : 0.0, ends.time,
+  data_.deployed.holdJoint(joint, ok ? held : Eigen::Vector3d::Zero(), ok ? damping_rate * across : 0.0, ends.time,
                    ends.winch_deployed, span);  // a failed probe holds nothing
   return ok;
 }
@@ -110,9 +105,9 @@ void ChainDynamics::computeBodyTerms(const Eigen::VectorXd& x, const EndInputs& 
 }
 
 void ChainDynamics::applyEnds(const EndInputs& ends) {
-  if (ends.winch) model_.setWinchLinkLength(ends.winch_length);
-  if (model_.jointHolds() > 0) model_.setHoldState(ends.time, ends.winch_deployed);
-  const LinkProperties& p = model_.properties();
+  if (ends.winch) model_.setWinchLinkLength(data_.deployed, ends.winch_length);
+  if (data_.deployed.jointHolds() > 0) data_.deployed.setHoldState(ends.time, ends.winch_deployed);
+  const LinkProperties& p = model_.configured();  // the clamps at rest: the same for any deployment
   data_.clamp_axis = ends.clamp_moves ? ends.clamp_axis : p.clamp_axis;
   data_.clamp_twist = ends.clamp_moves ? ends.clamp_twist : p.clamp_twist;
   data_.clamp_omega = ends.clamp_moves ? ends.clamp_omega : Eigen::Vector3d::Zero();
@@ -128,7 +123,7 @@ bool ChainDynamics::derivative(const Eigen::VectorXd& x, const EndInputs& ends, 
 }
 
 CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
-  const int n = links(), first = model_.firstLink();
+  const int n = links(), first = data_.deployed.firstLink();
   // The drum's slots (a winch) stay as they are: their rates are zero. Slots leave the cable one at a
   // time, each at a step's end, so only the last one stowed may still hold rates in this buffer.
   if (first > 0) xdot.segment<StateLayout::kPerLink>(StateLayout::axis(first - 1)).setZero();
@@ -159,7 +154,7 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
 
 bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, ChainOutputs& out) {
   if (!solve(x, ends, true)) return false;
-  const int n = links(), first = model_.firstLink();
+  const int n = links(), first = data_.deployed.firstLink();
   const LinkBlocks& l = data_.links;
   out.omega_rate.setZero(3 * n);  // the drum's slots stay at rest
   for (int k = first; k < n; ++k) out.omega_rate.segment<3>(3 * k) = l.get(&LinkBlock::omega_rate, k);
@@ -181,7 +176,7 @@ bool ChainDynamics::evaluate(const Eigen::VectorXd& x, const EndInputs& ends, Ch
       const double s = l.get(&LinkBlock::stretch, k);
       out.stretch(k) = s;
       out.far_tension(k) = l.get(&LinkBlock::axial_tension, k);
-      out.strain(k) = s / model_.get(&LinkConstants::length, k);
+      out.strain(k) = s / data_.deployed.get(&LinkConstants::length, k);
       const bool locked = model_.stretchLocked(k);
       if (!locked && s < 0.0) ++out.slack_links;
     }
@@ -214,35 +209,34 @@ bool ChainDynamics::matchTipVelocity(Eigen::VectorXd& x, const EndInputs& ends) 
   if (!tipVelocityProjection(model_, data_, change, omega_change, stretch_rate_change)) return false;
   const int n = links();
   const bool body = model_.body().active;
-  for (int k = model_.firstLink(); k < n; ++k) {
+  for (int k = data_.deployed.firstLink(); k < n; ++k) {
     x.segment<3>(StateLayout::omega(k)) += omega_change.col(k);
     if (model_.axial()) x(StateLayout::stretchRate(n, body, k)) += stretch_rate_change(k);
   }
   return true;
 }
 
-void ChainDynamics::computeLoads(const Eigen::VectorXd& x, const EndInputs& ends) {
+void ChainDynamics::forwardPass(const Eigen::VectorXd& x, const EndInputs& ends, Stage stage, bool with_dampers) {
   applyEnds(ends);
   computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
   computeKinematics(model_, data_, x, ends);
   computeBodyTerms(x, ends);
+  if (stage == Stage::kKinematics) return;
   computeExternalLoads(model_, data_, ends);
-  computeJointTorques(model_, data_, x);
+  computeJointTorques(model_, data_, x, with_dampers);
+}
+
+void ChainDynamics::computeLoads(const Eigen::VectorXd& x, const EndInputs& ends) {
+  forwardPass(x, ends, Stage::kLoads);
 }
 
 double ChainDynamics::mechanicalEnergy(const Eigen::VectorXd& x, const EndInputs& ends, double& magnitude) {
-  applyEnds(ends);
-  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
-  computeKinematics(model_, data_, x, ends);
-  computeBodyTerms(x, ends);
+  forwardPass(x, ends, Stage::kKinematics);
   return solvedMechanicalEnergy(x, magnitude);
 }
 
 void ChainDynamics::computeBodyPose(const Eigen::VectorXd& x, const EndInputs& ends) {
-  applyEnds(ends);
-  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
-  computeKinematics(model_, data_, x, ends);
-  computeBodyTerms(x, ends);
+  forwardPass(x, ends, Stage::kKinematics);
 }
 
 double ChainDynamics::solvedMechanicalEnergy(const Eigen::VectorXd& x, double& magnitude) {
@@ -257,11 +251,7 @@ double ChainDynamics::solvedMechanicalEnergy(const Eigen::VectorXd& x, double& m
 void ChainDynamics::generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, bool with_dampers,
                                       Eigen::VectorXd& out) {
   data_.dense.allocate(links());  // a no-op after construction with the semi-implicit integrator
-  applyEnds(ends);
-  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
-  computeKinematics(model_, data_, x, ends);
-  computeExternalLoads(model_, data_, ends);
-  computeJointTorques(model_, data_, x, with_dampers);
+  forwardPass(x, ends, Stage::kLoads, with_dampers);  // (no ROV body: the gate refuses it with this scheme)
   assembleGeneralizedForces(model_, data_);
   out = data_.dense.rhs;
 }

@@ -11,14 +11,12 @@ ChainModel::ChainModel(const CableParams& params)
     : n_(params.links),
       has_winch_(params.winch.enabled),
       nominal_(deriveLinkProperties(params)),
-      properties_(nominal_),
       formulation_(params.simulation.formulation),
       fluid_density_(params.fluid.density),
       drag_(params.fluid),
       seabed_(makeSeabedContact(params, nominal_)),
       points_(params.links),
-      attachment_begin_(params.links + 1, 0),
-      lanes_((params.links + kBlockLanes - 1) / kBlockLanes) {
+      attachment_begin_(params.links + 1, 0) {
   const LinkProperties& p = nominal_;
   for (const LinkAttachment& a : p.attachments) {
     PointSums& sums = points_[a.link];
@@ -59,24 +57,31 @@ ChainModel::ChainModel(const CableParams& params)
   }
   axial_ = p.axial_stiffness.size() > 0 && p.axial_stiffness.maxCoeff() > 0.0;
   last_locked_ = !(load_.inertia > 0.0) && !body_.active;
+  initial_first_ = params.drumSlots();
+}
+
+ChainDeployment ChainModel::initialDeployment() const {
+  ChainDeployment d;
+  d.properties_ = nominal_;
   // Padding lanes past the last link: zero length and mass, 1/I_P = 0; they add nothing anywhere.
-  for (LinkConstants& c : lanes_) c = LinkConstants{};
-  deploy(params.winch.stored_links);
+  d.lanes_.assign((n_ + kBlockLanes - 1) / kBlockLanes, LinkConstants{});
+  deploy(d, initial_first_);
+  return d;
 }
 
-ChainModel::ChainModel(const CableParams& params, const ChainModel& like) : ChainModel(params) {
-  if (like.links() != n_) {
+void ChainModel::redeploy(ChainDeployment& d) const {
+  if (d.properties_.length.size() != n_) {
     throw std::invalid_argument("cable.links = " + std::to_string(n_) + ": a retuned model must keep the " +
-                                std::to_string(like.links()) + " links of the running one");
+                                std::to_string(d.properties_.length.size()) + " links of the running one");
   }
-  if (like.firstLink() != first_) deploy(like.firstLink());
-  if (has_winch_) setWinchLinkLength(like.properties().length(first_));
-  holds_ = like.holds_;
-  hold_count_ = like.hold_count_;
+  const double winch_length = d.properties_.length(d.first_);
+  d.properties_ = nominal_;  // same sizes: no new links
+  deploy(d, d.first_);
+  if (has_winch_) setWinchLinkLength(d, winch_length);
 }
 
-void ChainModel::setLinkLength(int k, double l) {
-  LinkProperties& p = properties_;
+void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
+  LinkProperties& p = d.properties_;
   // Per unit length, from the configured slot and its section (a cable's mass per length does not
   // change with its length).
   const double per_length = nominal_.mass(k) / nominal_.length(k);
@@ -88,7 +93,7 @@ void ChainModel::setLinkLength(int k, double l) {
   p.inertia_transverse(k) = m * (l * l / 12.0 + radius * radius / 4.0);
   p.inertia_polar(k) = m * (radius * radius / 2.0);
 
-  LinkConstants& c = lanes_[k / kBlockLanes];
+  LinkConstants& c = d.lanes_[k / kBlockLanes];
   const int i = k % kBlockLanes;
   const bool deployed = l > 0.0;
   // A slot on the drum carries nothing (attachments are refused with a winch; config_loader.cpp).
@@ -125,13 +130,13 @@ void ChainModel::setLinkLength(int k, double l) {
   c.axial_damping[i] = stretches ? p.axial_damping / l : 0.0;
 }
 
-void ChainModel::deploy(int first) {
-  first_ = first;
+void ChainModel::deploy(ChainDeployment& d, int first) const {
+  d.first_ = first;
   // A held joint at or before the base link is no longer between two deployed links.
-  for (int i = hold_count_ - 1; i >= 0; --i) {
-    if (holds_[i].joint <= first) dropHold(i);
+  for (int i = d.hold_count_ - 1; i >= 0; --i) {
+    if (d.holds_[i].joint <= first) d.dropHold(i);
   }
-  for (int k = 0; k < n_; ++k) setLinkLength(k, k < first ? 0.0 : nominal_.length(k));
+  for (int k = 0; k < n_; ++k) setLinkLength(d, k, k < first ? 0.0 : nominal_.length(k));
   // The base's joint (the clamp's springs and dampers, or none for a pin) moves with the base link;
   // the drum's slots have no joints. Every drum slot has the base link's length, so slot 0's configured
   // springs are the clamp's for any slot.
@@ -139,46 +144,14 @@ void ChainModel::deploy(int first) {
       &LinkProperties::stiffness_elevation, &LinkProperties::stiffness_azimuth, &LinkProperties::stiffness_torsion,
       &LinkProperties::damping_elevation,   &LinkProperties::damping_azimuth,   &LinkProperties::damping_torsion};
   for (Eigen::VectorXd LinkProperties::*v : springs) {
-    properties_.*v = nominal_.*v;  // same size: no allocation
-    (properties_.*v).head(first).setZero();
-    (properties_.*v)(first) = (nominal_.*v)(0);
+    d.properties_.*v = nominal_.*v;  // same size: no allocation
+    (d.properties_.*v).head(first).setZero();
+    (d.properties_.*v)(first) = (nominal_.*v)(0);
   }
 }
 
-void ChainModel::setWinchLinkLength(double length) {
-  if (length != properties_.length(first_)) setLinkLength(first_, length);
-}
-
-void ChainModel::dropHold(int i) {
-  for (int j = i; j + 1 < hold_count_; ++j) holds_[j] = holds_[j + 1];
-  --hold_count_;
-}
-
-void ChainModel::holdJoint(int joint, const Eigen::Vector3d& torque, double damping, double start, double deployed,
-                           double span) {
-  int i = 0;
-  while (i < hold_count_ && holds_[i].joint != joint) ++i;
-  if (i == hold_count_) {
-    if (hold_count_ == kMaxJointHolds) dropHold(0);
-    i = hold_count_++;
-  }
-  holds_[i] = JointHold{joint, torque, start, deployed, span, damping, 1.0, torque};
-}
-
-void ChainModel::setHoldState(double t, double deployed) {
-  for (int i = 0; i < hold_count_; ++i) {
-    JointHold& h = holds_[i];
-    const double paid = (deployed - h.deployed) / h.span;
-    const double waited = kJointHoldLinks * (t - h.start) / kJointHoldLongest;
-    h.fraction = jointHoldLeft(std::max(paid, waited));
-    h.now = h.fraction * h.initial;
-  }
-}
-
-void ChainModel::dropReleasedHolds() {
-  for (int i = hold_count_ - 1; i >= 0; --i) {
-    if (holds_[i].fraction <= 0.0) dropHold(i);
-  }
+void ChainModel::setWinchLinkLength(ChainDeployment& d, double length) const {
+  if (length != d.properties_.length(d.first_)) setLinkLength(d, d.first_, length);
 }
 
 }  // namespace cable_dynamics

@@ -9,8 +9,8 @@ CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const Cha
   // Translation integrated along each link, rotation of the link's thickness, the load. Per-lane sums
   // (the padding lanes add zero: no mass, no weight), so that the loop runs on vectors.
   double kinetic_lanes[kBlockLanes] = {}, potential_lanes[kBlockLanes] = {};
-  for (int b = model.firstBlock(); b < data.links.blocks(); ++b) {
-    const LinkConstants& constants = model.block(b);
+  for (int b = data.deployed.firstBlock(); b < data.links.blocks(); ++b) {
+    const LinkConstants& constants = data.deployed.block(b);
     const LinkBlock& block = data.links.block(b);
     for (int i = 0; i < kBlockLanes; ++i) {
       // A point at s moves at v + s u': the mass moments (cable and attachments) about the base end

@@ -16,8 +16,8 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
   const bool uniform = current_field.uniform();
   const Vec3 current = toVec3(current_field.uniformValue());
   double drag_power = 0.0;
-  for (int b = model.firstBlock(); b < data.links.blocks(); ++b) {
-    const LinkConstants& constants = model.block(b);
+  for (int b = data.deployed.firstBlock(); b < data.links.blocks(); ++b) {
+    const LinkConstants& constants = data.deployed.block(b);
     LinkBlock& block = data.links.block(b);
     // Submerged weight, uniform along the link, and the attachments' at their points: total and first
     // moment about the base end.

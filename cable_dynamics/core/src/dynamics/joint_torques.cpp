@@ -17,7 +17,7 @@ namespace {
 /// sin te -> 0 unless Q_psi = Q_phi: the paper's K is singular there (docs/MODEL.md section 5).
 void paperSpringTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
   const int n = model.links();
-  const LinkProperties& p = model.properties();
+  const LinkProperties& p = data.deployed.properties();
   Eigen::Vector3d q_next = Eigen::Vector3d::Zero(), c_next = Eigen::Vector3d::Zero();
   // Paper coordinates in a forward pass, then torques backwards so Q_a_{i+1}, Q_t_{i+1} are at hand.
   paperCoordinates(n, data.azimuths, x, data.paper_q, data.paper_qd);
@@ -47,9 +47,9 @@ void paperSpringTorques(const ChainModel& model, ChainData& data, const Eigen::V
 
 /// Joint k couples link k-1 (the base's clamp, LinkProperties::clamp_axis, for k = 0) and link k.
 void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
-  const LinkProperties& p = model.properties();
+  const LinkProperties& p = data.deployed.properties();
   const LinkBlocks& links = data.links;
-  const int first = model.firstLink();
+  const int first = data.deployed.firstLink();
   for (int k = first; k < model.links(); ++k) {
     const bool inner = k > first;  // joint `first` is the base's
     const Eigen::Vector3d prev = inner ? links.get(&LinkBlock::u, k - 1) : data.clamp_axis;
@@ -105,11 +105,11 @@ Eigen::Vector3d holdTorque(const JointHold& h, const ChainData& data) {
   return torque - torque.dot(direction) * direction;
 }
 
-/// The winch's held joints' moments (ChainModel::jointHold) onto the links' torques: +now on link
+/// The winch's held joints' moments (ChainDeployment::jointHold) onto the links' torques: +now on link
 /// `joint`, -now on link `joint - 1`.
-void addJointHolds(const ChainModel& model, ChainData& data) {
-  for (int i = 0; i < model.jointHolds(); ++i) {
-    const JointHold& h = model.jointHold(i);
+void addJointHolds(ChainData& data) {
+  for (int i = 0; i < data.deployed.jointHolds(); ++i) {
+    const JointHold& h = data.deployed.jointHold(i);
     const Eigen::Vector3d torque = holdTorque(h, data);
     data.links.set(&LinkBlock::torque, h.joint, data.links.get(&LinkBlock::torque, h.joint) + torque);
     data.links.set(&LinkBlock::torque, h.joint - 1, data.links.get(&LinkBlock::torque, h.joint - 1) - torque);
@@ -123,12 +123,12 @@ void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::
   if (paper && !model.hasSprings()) {
     // Every torque is zero since construction (the presets), but for a winch's held joints: they write
     // their moments afresh each evaluation, and the first evaluation without any clears them.
-    if (model.jointHolds() == 0 && !data.holds_written) return;
-    for (int k = model.firstBlock() * kBlockLanes; k < model.links(); ++k) {
+    if (data.deployed.jointHolds() == 0 && !data.holds_written) return;
+    for (int k = data.deployed.firstBlock() * kBlockLanes; k < model.links(); ++k) {
       data.links.set(&LinkBlock::torque, k, Eigen::Vector3d::Zero());
     }
-    addJointHolds(model, data);
-    data.holds_written = model.jointHolds() > 0;
+    addJointHolds(data);
+    data.holds_written = data.deployed.jointHolds() > 0;
     return;
   }
   data.clamp_torque.setZero();
@@ -141,16 +141,16 @@ void computeJointTorques(const ChainModel& model, ChainData& data, const Eigen::
     bendingSpringTorques(model, data, x);
   }
   if (!with_dampers) data.damping_torque.setZero();
-  for (int k = model.firstLink(); k < model.links(); ++k) {
+  for (int k = data.deployed.firstLink(); k < model.links(); ++k) {
     data.links.set(&LinkBlock::torque, k, data.spring_torque.col(k) + data.damping_torque.col(k));
   }
-  addJointHolds(model, data);
+  addJointHolds(data);
 }
 
-double jointHoldPower(const ChainModel& model, const ChainData& data) {
+double jointHoldPower(const ChainData& data) {
   double power = 0.0;
-  for (int i = 0; i < model.jointHolds(); ++i) {
-    const JointHold& h = model.jointHold(i);
+  for (int i = 0; i < data.deployed.jointHolds(); ++i) {
+    const JointHold& h = data.deployed.jointHold(i);
     power += holdTorque(h, data).dot(data.links.get(&LinkBlock::omega, h.joint) - data.links.get(&LinkBlock::omega, h.joint - 1));
   }
   return power;
@@ -159,12 +159,12 @@ double jointHoldPower(const ChainModel& model, const ChainData& data) {
 double damperPower(const ChainModel& model, const ChainData& data) {
   if (model.stiffnessModel() == StiffnessModel::kPaper && !model.hasSprings()) return 0.0;  // no damper at all
   double power = 0.0;
-  for (int k = model.firstLink(); k < model.links(); ++k) power += data.damping_torque.col(k).dot(data.links.get(&LinkBlock::omega, k));
+  for (int k = data.deployed.firstLink(); k < model.links(); ++k) power += data.damping_torque.col(k).dot(data.links.get(&LinkBlock::omega, k));
   return power;
 }
 
 double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
-  const LinkProperties& p = model.properties();
+  const LinkProperties& p = data.deployed.properties();
   double energy = 0.0;
   if (model.stiffnessModel() == StiffnessModel::kPaper) {
     if (!model.hasSprings()) return 0.0;
@@ -178,7 +178,7 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
     return energy;
   }
   const LinkBlocks& links = data.links;
-  const int first = model.firstLink();
+  const int first = data.deployed.firstLink();
   for (int k = first; k < model.links(); ++k) {
     const bool inner = k > first;
     const Eigen::Vector3d prev = inner ? links.get(&LinkBlock::u, k - 1) : data.clamp_axis;
@@ -192,7 +192,7 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
 
 void springGeneralizedForces(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, Eigen::VectorXd& out) {
   const int n = model.links();
-  const LinkProperties& p = model.properties();
+  const LinkProperties& p = data.deployed.properties();
   out.setZero(3 * n);
   if (model.stiffnessModel() == StiffnessModel::kPaper && !model.hasSprings()) return;
   paperCoordinates(n, data.azimuths, x, data.paper_q, data.paper_qd);

@@ -8,7 +8,7 @@ namespace cable_dynamics {
 
 CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x,
                                       const EndInputs& ends) {
-  const int n = model.links(), first = model.firstLink();
+  const int n = model.links(), first = data.deployed.firstLink();
   LinkBlocks& links = data.links;
   // Three passes, each over the whole chain. The state holds a link's numbers together and a block
   // holds them by kind, so the first pass copies them one by one; a whole pass lies between those
@@ -21,7 +21,7 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
     block.u.set(i, {link[0], link[1], link[2]});
     block.omega.set(i, {link[4], link[5], link[6]});
   }
-  for (int b = model.firstBlock(); b < links.blocks(); ++b) {
+  for (int b = data.deployed.firstBlock(); b < links.blocks(); ++b) {
     LinkBlock& block = links.block(b);
     for (int i = 0; i < kBlockLanes; ++i) {
       // Links are unit vectors up to the integrator's drift: use the normalized axis.
@@ -41,7 +41,7 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
   // points moves by v u more and accelerates by v' u + 2 v u' more (docs/MODEL.md section 8), and the
   // links beyond it with them.
   Vec3 pos = toVec3(ends.base_position), vel = toVec3(ends.base_velocity), acc = toVec3(ends.base_acceleration);
-  for (int k = model.firstBlock() * kBlockLanes; k < first; ++k) {  // the idle lanes the block loops read
+  for (int k = data.deployed.firstBlock() * kBlockLanes; k < first; ++k) {  // the idle lanes the block loops read
     LinkBlock& block = links.of(k);
     const int i = LinkBlocks::lane(k);
     block.base_pos.set(i, pos);
@@ -64,7 +64,7 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
     // The far end is l + s along u (s = 0 with rigid links: the same numbers to the last bit): it moves
     // by (l + s) u' + s' u, and accelerates by (l + s) beta + 2 s' u' at zero angular and stretch
     // accelerations.
-    const double lever = model.of(k).length[i] + block.stretch[i], rate = block.stretch_rate[i];
+    const double lever = data.deployed.of(k).length[i] + block.stretch[i], rate = block.stretch_rate[i];
     const Vec3 u = block.u[i], axis_rate = block.axis_rate[i];
     pos = pos + lever * u;
     vel = vel + lever * axis_rate + rate * u;

@@ -84,15 +84,15 @@ CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactCon
 CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data, LinkBlocks* links,
                                   Eigen::Vector3d* load_external, SeabedReport* report) {
   const SeabedContactConstants& c = model.seabedContact();
-  const int n = model.links(), first = model.firstLink();
+  const int n = model.links(), first = data.deployed.firstLink();
   double dissipation = 0.0, arc_before = 0.0;
   const double shallowest = c.bed.shallowest();
   const bool flat_kernel = c.bed.flat() && report == nullptr;  // the hot path on a flat bed
   // The report's touchdown: where the signed penetration first crosses zero from the base, linear
   // between the contact point before (or the base end) and the first one in the bed.
   double previous_arc = 0.0, previous_penetration = -std::numeric_limits<double>::infinity();
-  for (int b = model.firstBlock(); b < data.links.blocks(); ++b) {
-    const LinkConstants& constants = model.block(b);
+  for (int b = data.deployed.firstBlock(); b < data.links.blocks(); ++b) {
+    const LinkConstants& constants = data.deployed.block(b);
     const LinkBlock& block = data.links.block(b);
     // Nothing of a block whose links all end above the shallowest depth touches: one test for eight.
     double deepest = -std::numeric_limits<double>::infinity();
@@ -201,8 +201,8 @@ CABLE_HOT_PATH double seabedContactEnergy(const ChainModel& model, const ChainDa
   if (!c.enabled()) return 0.0;
   const int n = model.links();
   double energy = 0.0;
-  for (int k = model.firstLink(); k < n; ++k) {
-    const double l = model.get(&LinkConstants::length, k);
+  for (int k = data.deployed.firstLink(); k < n; ++k) {
+    const double l = data.deployed.get(&LinkConstants::length, k);
     if (l <= 0.0) continue;
     const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), axis = data.links.get(&LinkBlock::u, k);
     if (std::max(base.z(), base.z() + l * axis.z()) <= c.bed.shallowest()) continue;

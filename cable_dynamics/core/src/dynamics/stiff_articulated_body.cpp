@@ -54,8 +54,8 @@ StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links), contact_(
 
 CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainModel& model, const ChainData& data, const EndInputs& ends,
                                      bool use_last_tension) {
-  const int n = model.links(), first = model.firstLink();
-  const LinkProperties& p = model.properties();
+  const int n = model.links(), first = data.deployed.firstLink();
+  const LinkProperties& p = data.deployed.properties();
   const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
   const bool in_water = model.fluidDensity() > 0.0;
   const LinkBlocks& blocks = data.links;
@@ -74,10 +74,10 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
     }
     // Drag: its damping over (omega, v_base), with the current at the link's middle (LinkDrag::damping).
     if (in_water) {
-      const double l = model.get(&LinkConstants::length, k);
+      const double l = data.deployed.get(&LinkConstants::length, k);
       const Eigen::Vector3d base = blocks.get(&LinkBlock::base_pos, k), v0 = blocks.get(&LinkBlock::base_vel, k);
       const Eigen::Vector3d relative = data.current.at(base.z() + 0.5 * l * u.z()) - v0;
-      model.drag().damping(l, model.dragCoefficients(k), u, relative, blocks.get(&LinkBlock::axis_rate, k), t.drag_rr,
+      model.drag().damping(l, data.deployed.dragCoefficients(k), u, relative, blocks.get(&LinkBlock::axis_rate, k), t.drag_rr,
                            t.drag_rv, t.drag_vv);
     } else if (contact.enabled()) {
       t.drag_rr.setZero();  // the seabed's damping adds to them below
@@ -85,13 +85,13 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
       t.drag_vv.setZero();
     }
     if (contact.enabled()) linearizeContact(model, data, k, t, contact_[k]);
-    t.lever = model.get(&LinkConstants::length, k) + blocks.get(&LinkBlock::stretch, k);
+    t.lever = data.deployed.get(&LinkConstants::length, k) + blocks.get(&LinkBlock::stretch, k);
   }
   // Geometric stiffness: the moment of everything outboard about link k's base end, u x G with
   // G = l F_outboard + (the link's own first moment), turns with the link: dtau = -(G.u) P dtheta - ...;
   // the symmetric, restoring part (G.u) P is kept, in tension only. With the joint forces of a solve,
   // G.u = l (T_k + T_{k+1}) / 2, the mean tension along the link times its length.
-  if (use_last_tension) geometricFromLastTension(model);
+  if (use_last_tension) geometricFromLastTension(model, data);
   Eigen::Vector3d outboard = data.load_external;
   for (int k = n - 1; k >= first && !use_last_tension; --k) {
     StiffLinkTerms& t = links_[k];
@@ -126,7 +126,7 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
   // The points' stiffness K(s) and damping D(s) summed as K_m = sum s^m K(s) (and D_m), then laid out over
   // (rotation, base end) as the drag's: [[-[u]x K2 [u]x, [u]x K1], [-K1 [u]x, K0]].
   const SeabedContactConstants& c = model.seabedContact();
-  const double l = model.get(&LinkConstants::length, k);
+  const double l = data.deployed.get(&LinkConstants::length, k);
   t.in_contact = false;
   out = StiffContactTerms();
   if (l <= 0.0) return;
@@ -160,8 +160,8 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
   t.drag_vv += d_m[0];
 }
 
-void StiffArticulatedBody::geometricFromLastTension(const ChainModel& model) {
-  for (int k = model.firstLink(); k < model.links(); ++k) {
+void StiffArticulatedBody::geometricFromLastTension(const ChainModel& model, const ChainData& data) {
+  for (int k = data.deployed.firstLink(); k < model.links(); ++k) {
     const double far = k + 1 < model.links() ? links_[k + 1].tension : tip_tension_;
     links_[k].geometric = std::max(0.0, 0.5 * links_[k].lever * (links_[k].tension + far));
   }
@@ -177,7 +177,7 @@ void StiffArticulatedBody::clearExtra() {
 }
 
 void StiffArticulatedBody::linearizeStretches(const ChainModel& model, const ChainData& data, double horizon) {
-  for (int k = model.firstLink(); k < model.links(); ++k) {
+  for (int k = data.deployed.firstLink(); k < model.links(); ++k) {
     StiffLinkTerms& t = links_[k];
     // The stretch's law (forces/axial_spring.h): its k and c unless the link stays clearly slack over the
     // step's horizon (s + h s' below -0.1 % of its length, the snap counter's margin); 0 there. With the
@@ -188,7 +188,7 @@ void StiffArticulatedBody::linearizeStretches(const ChainModel& model, const Cha
     // (the snap test at 10 ms).
     const int lane = LinkBlocks::lane(k);
     const LinkBlock& block = data.links.of(k);
-    const LinkConstants& constants = model.of(k);
+    const LinkConstants& constants = data.deployed.of(k);
     const double s = block.stretch[lane], rate = block.stretch_rate[lane];
     const bool taut = s + std::max(0.0, horizon * rate) > -kClearlySlack * constants.length[lane];
     t.stretch_spring = taut ? constants.axial_stiffness[lane] : 0.0;
@@ -196,19 +196,19 @@ void StiffArticulatedBody::linearizeStretches(const ChainModel& model, const Cha
   }
 }
 
-void StiffArticulatedBody::addStretchJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+void StiffArticulatedBody::addStretchJacobianTimes(const ChainModel& model, const ChainData& data, double stiffness_factor, double damping_factor,
                                                    const Eigen::VectorXd& stretch, const Eigen::VectorXd& rate) {
-  for (int k = model.firstLink(); k < model.links(); ++k) {
+  for (int k = data.deployed.firstLink(); k < model.links(); ++k) {
     StiffLinkTerms& t = links_[k];
     t.stretch_extra += stiffness_factor * t.stretch_spring * stretch(k) + damping_factor * t.stretch_damper * rate(k);
   }
 }
 
-CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& model, const ChainData& data, double stiffness_factor, double damping_factor,
                                             const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
                                             const Eigen::Vector3d& tip_rotation, const Eigen::Matrix3Xd& translation,
                                             const Eigen::Vector3d& tip_translation) {
-  const int n = model.links(), first = model.firstLink();
+  const int n = model.links(), first = data.deployed.firstLink();
   for (int k = first; k < n; ++k) {
     StiffLinkTerms& t = links_[k];
     const Eigen::Vector3d r = rotation.col(k);
@@ -242,7 +242,7 @@ CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& mod
 
 CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& model, const ChainData& data, double damping_weight,
                                  double stiffness_weight) {
-  const int n = model.links(), first = model.firstLink();
+  const int n = model.links(), first = data.deployed.firstLink();
   const LinkBlocks& blocks = data.links;
   const LoadConstants& load = model.load();
   const double cd = damping_weight, ck = stiffness_weight;
@@ -262,7 +262,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
   Eigen::Vector3d child_pv = tip_bias;
   for (int k = n - 1; k >= first; --k) {
     StiffLinkTerms& t = links_[k];
-    const LinkConstants& c = model.of(k);
+    const LinkConstants& c = data.deployed.of(k);
     const LinkBlock& block = blocks.of(k);
     const int i = LinkBlocks::lane(k);
     const double l = c.length[i];
@@ -359,7 +359,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     t.delta_acc = d;
     if (k == first) base_force_ = child_rv.transpose() * nu + child_pv;
     const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
-    d -= (axial ? t.lever : model.get(&LinkConstants::length, k)) * u.cross(alpha);  // the far end: + l alpha x u
+    d -= (axial ? t.lever : data.deployed.get(&LinkConstants::length, k)) * u.cross(alpha);  // the far end: + l alpha x u
     if (axial) {  // and its stretch (zero when locked: stretch_inverse 0)
       t.stretch_acc = -t.stretch_inverse * (t.stretch_lin.dot(d) + t.stretch_rot.dot(alpha) + t.stretch_bias);
       d += t.stretch_acc * u;

@@ -144,7 +144,7 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   problem.tip_clamp_moves = ends.tip_clamp_moves;
   problem.tip_clamp_axis = ends.tip_clamp_axis;
   dynamics_.applyEnds(ends);  // the winch's link at its present length
-  StaticSolution s = solveStatics(dynamics_.model(), dynamics_.current(), problem, options);
+  StaticSolution s = solveStatics(dynamics_.model(), dynamics_.deployed(), dynamics_.current(), problem, options);
   if (!s.converged) return s;
   const int n = links();
   setRestState(s, x_);
@@ -192,7 +192,7 @@ void CableSimulator::recover() {
 
 void CableSimulator::deployConfigured() {
   if (!hasWinch()) return;
-  const int first = params_.winch.stored_links;
+  const int first = params_.drumSlots();
   dynamics_.deploy(first);
   ends_.setOutboardLength(params_.deployedLength() - params_.link_lengths[first]);
 }
@@ -220,7 +220,7 @@ void CableSimulator::finishWinchStep() {
   winch.finish(time_);
   const EndInputs before = ends_.at(time_);
   // The energy evaluations below only where a link is added or removed.
-  if (winchRegridDue(dynamics_.model(), before.winch_length, params_.winch.link_length) == WinchRegrid::kNone) return;
+  if (winchRegridDue(dynamics_.deployed(), before.winch_length, params_.winch.link_length) == WinchRegrid::kNone) return;
   double magnitude = 0.0, outboard = ends_.outboardLength();
   const double energy_before = dynamics_.mechanicalEnergy(x_, before, magnitude);
   const WinchRegrid change = regridWinchLinks(dynamics_, x_, before.winch_length, params_.winch.link_length,
@@ -232,7 +232,7 @@ void CableSimulator::finishWinchStep() {
   // next link is paid out (docs/MODEL.md section 8), so the line pull goes on from where it was.
   if (change == WinchRegrid::kAdded) {
     const int joint = firstLink() + 1;
-    dynamics_.holdNewJoint(joint, x_, ends_.at(time_), dynamics_.model().properties().length(joint),
+    dynamics_.holdNewJoint(joint, x_, ends_.at(time_), dynamics_.properties().length(joint),
                            std::min(kJointHoldDampingRate, kJointHoldDampingStep / dt_));
   }
   // What the change took out of the mechanical energy (nothing when a link is added; the kink's
@@ -250,11 +250,11 @@ void CableSimulator::watchStretches(bool count_snaps) {
   if (!model.axial()) return;
   const int n = links();
   const bool body = hasBody();
-  for (int k = model.firstLink(); k < n; ++k) {
+  for (int k = dynamics_.deployed().firstLink(); k < n; ++k) {
     if (model.stretchLocked(k)) continue;
     const int i = LinkBlocks::lane(k);
     const double s = x_(StateLayout::stretch(n, body, k)), rate = x_(StateLayout::stretchRate(n, body, k));
-    const LinkConstants& c = model.of(k);
+    const LinkConstants& c = dynamics_.deployed().of(k);
     largest_tension_ = std::max(largest_tension_, AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, rate));
     // A snap: a link shorter than unstretched by more than 0.1 % of its length that comes taut. The
     // margin keeps a taut line's light links, ringing about s = 0 after a snap, from counting each crossing.

@@ -34,8 +34,10 @@ void CableSimulator::retune(const CableParams& params) {
   }
 
   // Built and checked aside, so that a refusal leaves the running model as it was.
-  const ChainModel model(next, dynamics_.model());
-  checkSimulatorInputs(next, model.properties(), use_);  // the gate; the coupling's rate enters RK4's limit
+  const ChainModel model(next);
+  ChainDeployment deployed = dynamics_.deployed();  // the running deployment, with the new constants
+  model.redeploy(deployed);
+  checkSimulatorInputs(next, deployed.properties(), use_);  // the gate; the coupling's rate enters RK4's limit
   dynamics_.replaceModel(model);
   params_ = next;
   // A scheme that kept an evaluation of the old model (the last step's end) must evaluate afresh.

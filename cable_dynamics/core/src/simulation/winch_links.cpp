@@ -16,17 +16,17 @@ void stow(Eigen::VectorXd& x, int k) {
 
 }  // namespace
 
-WinchRegrid winchRegridDue(const ChainModel& model, double winch_length, double link_length) {
-  const int first = model.firstLink();
+WinchRegrid winchRegridDue(const ChainDeployment& deployed, double winch_length, double link_length) {
+  const int first = deployed.firstLink(), n = static_cast<int>(deployed.properties().length.size());
   if (winch_length > kWinchLinkSplitAt * link_length && first > 0) return WinchRegrid::kAdded;
-  if (winch_length < kWinchLinkMergeAt * link_length && first + 1 < model.links()) return WinchRegrid::kRemoved;
+  if (winch_length < kWinchLinkMergeAt * link_length && first + 1 < n) return WinchRegrid::kRemoved;
   return WinchRegrid::kNone;
 }
 
 WinchRegrid regridWinchLinks(ChainDynamics& dynamics, Eigen::VectorXd& x, double winch_length, double link_length,
                              double winch_speed, double& outboard_length) {
-  const int first = dynamics.model().firstLink();
-  const WinchRegrid due = winchRegridDue(dynamics.model(), winch_length, link_length);
+  const int first = dynamics.deployed().firstLink();
+  const WinchRegrid due = winchRegridDue(dynamics.deployed(), winch_length, link_length);
   if (due == WinchRegrid::kAdded) {
     // The new winch's link (slot first - 1) is the inboard part of the old one: same axis, twist and
     // angular velocity, so every material point keeps its position and velocity.
@@ -34,12 +34,12 @@ WinchRegrid regridWinchLinks(ChainDynamics& dynamics, Eigen::VectorXd& x, double
     x.segment<StateLayout::kPerLink>(StateLayout::axis(fresh)) = x.segment<StateLayout::kPerLink>(StateLayout::axis(first));
     dynamics.data().azimuths.copy(first, fresh);
     dynamics.deploy(fresh);  // slot `first` is a configured link again, of its configured length
-    outboard_length += dynamics.model().properties().length(first);
+    outboard_length += dynamics.properties().length(first);
     return WinchRegrid::kAdded;
   }
   if (due == WinchRegrid::kRemoved) {
     const int next = first + 1;
-    const double a = winch_length, b = dynamics.model().properties().length(next), total = a + b;
+    const double a = winch_length, b = dynamics.properties().length(next), total = a + b;
     const Eigen::Vector3d u_a = x.segment<3>(StateLayout::axis(first)).normalized();
     const Eigen::Vector3d u_b = x.segment<3>(StateLayout::axis(next)).normalized();
     const Eigen::Vector3d w_a = x.segment<3>(StateLayout::omega(first)), w_b = x.segment<3>(StateLayout::omega(next));

@@ -11,8 +11,10 @@
 namespace cable_dynamics {
 namespace statics {
 
-StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& current, const StaticProblem& problem)
+StaticEquations::StaticEquations(const ChainModel& model, const ChainDeployment& deployed, const CurrentField& current,
+                                 const StaticProblem& problem)
     : model_(model),
+      deployed_(deployed),
       current_(current),
       problem_(problem),
       first_(problem.first_link),
@@ -21,14 +23,14 @@ StaticEquations::StaticEquations(const ChainModel& model, const CurrentField& cu
       weight_(m_),
       weight_moment_(m_),
       bend_stiffness_(m_) {
-  const LinkProperties& p = model.properties();
+  const LinkProperties& p = deployed.properties();
   const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
   for (int i = 0; i < m_; ++i) {
     const int k = first_ + i;
     // With axial elasticity the lever to the far end is l + s; the link's own mass stays on its l.
-    length_(i) = model.get(&LinkConstants::length, k) + (problem.stretch.size() > k ? problem.stretch(k) : 0.0);
-    weight_(i) = model.get(&LinkConstants::weight, k);  // the attachments' included
-    weight_moment_(i) = model.get(&LinkConstants::weight_moment, k);
+    length_(i) = deployed.get(&LinkConstants::length, k) + (problem.stretch.size() > k ? problem.stretch(k) : 0.0);
+    weight_(i) = deployed.get(&LinkConstants::weight, k);  // the attachments' included
+    weight_moment_(i) = deployed.get(&LinkConstants::weight_moment, k);
     // A winch pays out from the drum: the first deployed link leaves the base's clamp, with the spring of
     // the joint it has in the model.
     bend_stiffness_(i) = bending ? p.stiffness_elevation(k) : 0.0;
@@ -56,7 +58,7 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
   if (!in_water_) return;
   // The same quadrature as the dynamics, at zero velocity: the relative velocity is the current alone.
   Eigen::Vector3d drag_force, drag_moment;
-  model_.drag().pointwise(current_, l, model_.dragCoefficients(k), p, Eigen::Vector3d::Zero(), u, Eigen::Vector3d::Zero(),
+  model_.drag().pointwise(current_, l, deployed_.dragCoefficients(k), p, Eigen::Vector3d::Zero(), u, Eigen::Vector3d::Zero(),
                           drag_force, drag_moment);
   force += drag_force;
   moment += drag_moment;

@@ -40,7 +40,8 @@ inline double staticHoldStiffness(const ChainModel& model) { return 1e-4 * model
 
 class StaticEquations {
  public:
-  StaticEquations(const ChainModel& model, const CurrentField& current, const StaticProblem& problem);
+  StaticEquations(const ChainModel& model, const ChainDeployment& deployed, const CurrentField& current,
+                  const StaticProblem& problem);
 
   int links() const { return m_; }                      ///< deployed links m
   int link(int i) const { return first_ + i; }          ///< model index of deployed link i
@@ -97,6 +98,7 @@ class StaticEquations {
 
  private:
   const ChainModel& model_;
+  const ChainDeployment& deployed_;  ///< the cable as deployed (a winch's link at its present length)
   const CurrentField& current_;
   StaticProblem problem_;
   int first_, m_;

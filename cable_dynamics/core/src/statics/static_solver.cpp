@@ -20,13 +20,14 @@ using statics::StaticNewton;
 using statics::StaticState;
 
 /// Why the model or the problem has no solution here, or empty.
-std::string refusal(const ChainModel& model, const StaticProblem& problem, const StaticEquations* eq) {
+std::string refusal(const ChainModel& model, const ChainDeployment& deployed, const StaticProblem& problem,
+                    const StaticEquations* eq) {
   std::ostringstream text;
   if (problem.first_link < 0 || problem.first_link >= model.links()) {
     text << "no deployed link: first_link " << problem.first_link << " of " << model.links() << " links";
     return text.str();
   }
-  const LinkProperties& p = model.properties();
+  const LinkProperties& p = deployed.properties();
   if (model.stiffnessModel() == StiffnessModel::kPaper &&
       (p.stiffness_elevation.any() || p.stiffness_azimuth.any() || p.stiffness_torsion.any())) {
     return "the paper stiffness model's springs are not supported by the statics (use the bending model, or no springs)";
@@ -78,9 +79,10 @@ bool continuation(SetScale set_scale, double first, const char* what, StaticNewt
   return false;
 }
 
-void writeSolution(const ChainModel& model, const StaticEquations& eq, const StaticState& s, StaticSolution& out) {
+void writeSolution(const ChainModel& model, const ChainDeployment& deployed, const StaticEquations& eq, const StaticState& s,
+                   StaticSolution& out) {
   const int n = model.links(), first = eq.problem().first_link;
-  const LinkProperties& p = model.properties();
+  const LinkProperties& p = deployed.properties();
   out.axes = Eigen::Matrix3Xd::Zero(3, n);
   out.axes.row(2).setOnes();
   out.twists = Eigen::VectorXd::Zero(n);
@@ -143,15 +145,16 @@ namespace {
 /// The equilibrium with each link's lever l + problem.stretch (rigid links when it is empty).
 /// `reach_target`: the problem's own target (the anchor's reach is checked on it), or one an exact anchor's
 /// sweeps have shifted beyond the anchor by the hold's give (checked on `reach_target`).
-StaticSolution solveAtStretch(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
+StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& deployed, const CurrentField& current,
+                              const StaticProblem& problem,
                               const StaticOptions& options, const Eigen::Vector3d* reach_target = nullptr) {
   StaticSolution out;
-  out.message = refusal(model, problem, nullptr);
+  out.message = refusal(model, deployed, problem, nullptr);
   if (!out.message.empty()) return out;
-  StaticEquations eq(model, current, problem);
+  StaticEquations eq(model, deployed, current, problem);
   StaticProblem reach = problem;
   if (reach_target != nullptr) reach.target_position = *reach_target;
-  out.message = refusal(model, reach, &eq);
+  out.message = refusal(model, deployed, reach, &eq);
   if (!out.message.empty()) return out;
 
   StaticState s;
@@ -171,19 +174,20 @@ StaticSolution solveAtStretch(const ChainModel& model, const CurrentField& curre
   }
   out.converged = ok;
   out.message = ok ? "" : why;
-  writeSolution(model, eq, s, out);
+  writeSolution(model, deployed, eq, s, out);
   return out;
 }
 
 /// Each link's stretch under the tension at its far end, T_k = -J_{k+1} . u_k (the load's pull at the
 /// last), tension only, for the axial springs T = EA / l s (a locked last link stays rigid).
-Eigen::VectorXd stretchUnderTension(const ChainModel& model, const StaticSolution& solved, int first) {
+Eigen::VectorXd stretchUnderTension(const ChainModel& model, const ChainDeployment& deployed, const StaticSolution& solved,
+                                    int first) {
   const int n = model.links();
   Eigen::VectorXd stretch = Eigen::VectorXd::Zero(n);
   for (int k = first; k < n; ++k) {
     const Eigen::Vector3d outboard = k + 1 < n ? Eigen::Vector3d(solved.joint_force.col(k + 1)) : solved.tip_force;
     const double tension = -outboard.dot(solved.axes.col(k));
-    const double spring = model.get(&LinkConstants::axial_stiffness, k);
+    const double spring = deployed.get(&LinkConstants::axial_stiffness, k);
     stretch(k) = spring > 0.0 && tension > 0.0 ? tension / spring : 0.0;
   }
   return stretch;
@@ -191,10 +195,11 @@ Eigen::VectorXd stretchUnderTension(const ChainModel& model, const StaticSolutio
 
 }  // namespace
 
-StaticSolution solveStatics(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
+StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& deployed, const CurrentField& current,
+                            const StaticProblem& problem,
                             const StaticOptions& options) {
   const bool held = problem.tip_coupled && model.holdStiffness() > 0.0;
-  if (!model.axial() && !held) return solveAtStretch(model, current, problem, options);
+  if (!model.axial() && !held) return solveAtStretch(model, deployed, current, problem, options);
   // Two fixed points in one loop, each sweep a solve:
   // - the elastic equilibrium: solve with the levers l + s, stretch each link under its far end's tension,
   //   repeat. Each sweep changes the tensions by the stretch's share of the line's compliance (about
@@ -206,20 +211,20 @@ StaticSolution solveStatics(const ChainModel& model, const CurrentField& current
   // Stopped when the stretches and the tip move by less than 1e-12 of the length.
   StaticProblem sweep_problem = problem;
   if (model.axial()) sweep_problem.stretch = Eigen::VectorXd::Zero(model.links());
-  const double length = model.properties().length.sum();
+  const double length = deployed.properties().length.sum();
   constexpr int kMaxSweeps = 100;
   StaticSolution out;
   Eigen::Matrix3d secant = Eigen::Matrix3d::Identity();  // d tip / d target, Broyden's estimate
   Eigen::Vector3d last_shift = Eigen::Vector3d::Zero(), last_tip = Eigen::Vector3d::Zero();
   for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
     const int iterations = out.iterations;
-    out = solveAtStretch(model, current, sweep_problem, options, &problem.target_position);
+    out = solveAtStretch(model, deployed, current, sweep_problem, options, &problem.target_position);
     out.iterations += iterations;
     out.elastic_sweeps = model.axial() ? sweep : 0;
     if (!out.converged) return out;
     double change = 0.0;
     if (model.axial()) {
-      const Eigen::VectorXd next = stretchUnderTension(model, out, problem.first_link);
+      const Eigen::VectorXd next = stretchUnderTension(model, deployed, out, problem.first_link);
       change = (next - sweep_problem.stretch).cwiseAbs().maxCoeff();
       sweep_problem.stretch = next;
     }

@@ -10,6 +10,7 @@
 #include <Eigen/StdVector>
 
 #include "cable_dynamics/dynamics/azimuth_tracker.h"
+#include "cable_dynamics/dynamics/chain_deployment.h"
 #include "cable_dynamics/dynamics/chain_model.h"
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/link_block.h"
@@ -42,6 +43,11 @@ struct DenseWorkspace {
 /// azimuth tracker). Sized once in the constructor.
 struct ChainData {
   explicit ChainData(const ChainModel& model);
+
+  /// The cable as the winch has deployed it now: the per-link constants every pass reads, and the winch's
+  /// held joints. Written only by the model (ChainModel::deploy, setWinchLinkLength, redeploy); without a
+  /// winch it stays as constructed.
+  ChainDeployment deployed;
 
   LinkBlocks links;  ///< per-link kinematics, loads and recursion terms, eight links a block
 

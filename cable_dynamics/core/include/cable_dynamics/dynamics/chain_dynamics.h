@@ -11,8 +11,8 @@
 /// everything outboard of each joint; see docs/MODEL.md section 6. Frame: the paper's, z down, origin at
 /// the base's rest position.
 ///
-/// One evaluation: computeKinematics -> computeExternalLoads -> computeJointTorques -> the solver of the
-/// model's formulation (solveArticulatedBody, O(n); or solveDense, O(n^3)). derivative() is the hot path
+/// One evaluation: forwardPass (applyEnds -> computeAxialTensions -> computeKinematics -> the ROV body ->
+/// computeExternalLoads -> computeJointTorques) -> the solver of the model's formulation (solveArticulatedBody, O(n); or solveDense, O(n^3)). derivative() is the hot path
 /// of every integrator: it must not allocate (test_no_allocation) and is measured by bench/fluid_step.
 
 #include <Eigen/Core>
@@ -59,32 +59,39 @@ class ChainDynamics {
 
   int links() const { return model_.links(); }
   /// The winch deploys slots [first, n) (ChainModel::deploy); between evaluations only.
-  void deploy(int first) { model_.deploy(first); }
+  void deploy(int first) { model_.deploy(data_.deployed, first); }
   /// Holds joint `joint` (between links joint - 1 and joint, straight and turning together, as just
   /// after the winch's link split there) with the moment across their axis that keeps their relative
   /// angular acceleration across it zero at x: the moment the rigid link held there, so that the
   /// accelerations, and the line pull, are those the unsplit link had; it is let go as the winch pays
-  /// out the next kJointHoldLinks links of `span` [m] (ChainModel::holdJoint, JointHold), with a damper
+  /// out the next kJointHoldLinks links of `span` [m] (ChainDeployment::holdJoint, JointHold), with a damper
   /// of `damping_rate` [1/s] times the joint's relative inertia across the axis. Three solves; between
   /// steps. Returns false (a zero hold) when a solve fails.
   bool holdNewJoint(int joint, const Eigen::VectorXd& x, const EndInputs& ends, double span, double damping_rate);
   /// Drops the holds the ends `ends` let go entirely; between steps.
   void dropReleasedHolds(const EndInputs& ends) {
-    if (model_.jointHolds() == 0) return;
-    model_.setHoldState(ends.time, ends.winch_deployed);
-    model_.dropReleasedHolds();
+    if (data_.deployed.jointHolds() == 0) return;
+    data_.deployed.setHoldState(ends.time, ends.winch_deployed);
+    data_.deployed.dropReleasedHolds();
   }
   /// Drops any hold (a new state).
-  void releaseJoints() { model_.releaseJoints(); }
-  /// Replaces the constants by `model` (the same cable: same n; live tuning of its coefficients). The
-  /// workspace keeps its sizes; between evaluations only.
-  void replaceModel(const ChainModel& model) { model_ = model; }
-  /// What the ends set in the model and the data before any pass: the winch's link length, the clamp.
-  /// Every evaluation calls it; the statics call it to see the model as the ends have it now.
+  void releaseJoints() { data_.deployed.releaseJoints(); }
+  /// Replaces the constants by `model` (the same cable: same n; live tuning of its coefficients) and
+  /// rebuilds the deployment's constants from it (same first slot, winch link and holds). The workspace
+  /// keeps its sizes; between evaluations only. Throws std::invalid_argument for another n.
+  void replaceModel(const ChainModel& model) {
+    model.redeploy(data_.deployed);
+    model_ = model;
+  }
+  /// What the ends set in the data before any pass: the winch's link length and its held joints' moments
+  /// (the deployment), the clamps. Every evaluation calls it; the statics call it to see the cable as the
+  /// ends have it now.
   void applyEnds(const EndInputs& ends);
   int stateSize() const { return StateLayout::size(model_.links(), model_.body().active, model_.axial()); }
   const ChainModel& model() const { return model_; }
-  const LinkProperties& properties() const { return model_.properties(); }
+  /// The cable as deployed now (per-link constants, the winch's link and holds; ChainData::deployed).
+  const ChainDeployment& deployed() const { return data_.deployed; }
+  const LinkProperties& properties() const { return data_.deployed.properties(); }
   ChainData& data() { return data_; }
   const ChainData& data() const { return data_; }
   CurrentField& current() { return data_.current; }
@@ -134,6 +141,13 @@ class ChainDynamics {
   void stateFromPaper(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, Eigen::VectorXd& x) const;
 
  private:
+  /// How far forwardPass goes: the kinematics (and the ROV body's terms), or on to the loads on every
+  /// link (external loads, joint springs and dampers) that a solver reads.
+  enum class Stage { kKinematics, kLoads };
+  /// The one forward pass every evaluation starts with: the ends into the data (applyEnds), the
+  /// stretches, the kinematics, the ROV body's terms, and with Stage::kLoads the external loads and the
+  /// joint torques (with the dampers or without). O(n), no allocation.
+  void forwardPass(const Eigen::VectorXd& x, const EndInputs& ends, Stage stage, bool with_dampers = true);
   /// The passes up to the accelerations (and all joint forces or only joint 0's).
   bool solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces);
   void writeRates(Eigen::VectorXd& xdot) const;  ///< x' from the solved state, after solve()

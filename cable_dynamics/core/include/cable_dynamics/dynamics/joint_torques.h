@@ -28,8 +28,8 @@ void springGeneralizedForces(const ChainModel& model, ChainData& data, const Eig
 /// Power of the joint dampers [W] (negative: they take energy out), after computeJointTorques().
 double damperPower(const ChainModel& model, const ChainData& data);
 
-/// Power of the winch's held joints' moments (ChainModel::jointHold) on the links [W], after
+/// Power of the winch's held joints' moments (ChainDeployment::jointHold) on the links [W], after
 /// computeKinematics() and ChainDynamics::applyEnds(); booked with the losses (lossPower).
-double jointHoldPower(const ChainModel& model, const ChainData& data);
+double jointHoldPower(const ChainData& data);
 
 }  // namespace cable_dynamics

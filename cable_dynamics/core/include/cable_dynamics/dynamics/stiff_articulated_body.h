@@ -93,7 +93,7 @@ class StiffArticulatedBody {
 
   /// The geometric stiffness alone, from the tensions of the last solve() (as linearize() with
   /// `use_last_tension`): the other terms are kept.
-  void geometricFromLastTension(const ChainModel& model);
+  void geometricFromLastTension(const ChainModel& model, const ChainData& data);
 
   /// Axial elasticity: each stretch's spring and damper for the matrix at the state of `data`, kept until
   /// the next call (a step's two stages share them: switched between its stages, a link coming taut made
@@ -104,14 +104,14 @@ class StiffArticulatedBody {
   /// Axial elasticity: adds stiffness_factor k r + damping_factor c r' (each link's stretch law's
   /// derivatives from linearize()) to the right-hand side of each stretch, r being a stretch (n) [m] and
   /// r' a stretch rate (n) [m/s].
-  void addStretchJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+  void addStretchJacobianTimes(const ChainModel& model, const ChainData& data, double stiffness_factor, double damping_factor,
                                const Eigen::VectorXd& stretch, const Eigen::VectorXd& rate);
   /// Adds stiffness_factor K r + damping_factor D r to the right-hand side, as generalized forces:
   /// r is a rotation (or rotation rate) of each link, `rotation` (3 x n) [rad or rad/s], with
   /// `base_rotation` the base clamp's and `tip_rotation` a clamped tip's (the springs act on the
   /// differences), a translation of each base end `translation` (3 x n) (the drag's damping and the
   /// seabed read it) and of the tip, `tip_translation` (relative to the target when coupled).
-  void addJacobianTimes(const ChainModel& model, double stiffness_factor, double damping_factor,
+  void addJacobianTimes(const ChainModel& model, const ChainData& data, double stiffness_factor, double damping_factor,
                         const Eigen::Matrix3Xd& rotation, const Eigen::Vector3d& base_rotation,
                         const Eigen::Vector3d& tip_rotation, const Eigen::Matrix3Xd& translation,
                         const Eigen::Vector3d& tip_translation);

@@ -336,6 +336,9 @@ struct CableParams {
   double totalLength() const;
   /// Deployed length at start [m] (totalLength() without a winch).
   double deployedLength() const;
+  /// The slots on the winch's drum at start, [0, drumSlots()) (0 without a winch): where the configured
+  /// deployment's base link is. Adapters read this, never winch.stored_links.
+  int drumSlots() const { return winch.enabled ? winch.stored_links : 0; }
   /// true when the links stretch: cable.axial_stiffness or a section's is > 0.
   bool stretches() const;
 };

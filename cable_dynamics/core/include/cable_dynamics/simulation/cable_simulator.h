@@ -175,7 +175,7 @@ class CableSimulator {
   /// outside [winch.min_length, winch.max_length].
   void commandWinchLength(double length);
   /// The base link's slot (0 without a winch) and the deployed length [m].
-  int firstLink() const { return dynamics_.model().firstLink(); }
+  int firstLink() const { return dynamics_.deployed().firstLink(); }
   double deployedLength() const;
   /// Links added and removed at the winch since reset, and the mechanical energy those changes took
   /// out (counted as dissipated: the kink lost when two links merge) [J].

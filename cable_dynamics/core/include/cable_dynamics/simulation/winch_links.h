@@ -20,7 +20,7 @@ constexpr double kWinchLinkMergeAt = 1.0;
 /// slot left on the drum), remove one (shorter than kWinchLinkMergeAt and a link beyond it to merge
 /// into), or nothing.
 enum class WinchRegrid { kNone, kAdded, kRemoved };
-WinchRegrid winchRegridDue(const ChainModel& model, double winch_length, double link_length);
+WinchRegrid winchRegridDue(const ChainDeployment& deployed, double winch_length, double link_length);
 
 /// After an accepted step, with `winch_length` [m] the winch's link's length now and `link_length`
 /// [m] the configured length of a link added at the winch: splits the winch's link (a new slot in

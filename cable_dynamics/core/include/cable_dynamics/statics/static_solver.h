@@ -87,8 +87,8 @@ struct StaticSolution {
 /// torsion terms have no rest shape off the vertical: refused with a message. Not converged, with a
 /// message, when a coupled target lies farther from the base than the deployed cable is long (the
 /// coupling spring stands in for a rigid hold, which could not reach it).
-StaticSolution solveStatics(const ChainModel& model, const CurrentField& current, const StaticProblem& problem,
-                            const StaticOptions& options = {});
+StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& deployed, const CurrentField& current,
+                            const StaticProblem& problem, const StaticOptions& options = {});
 
 /// The solved shape at rest into the state x (dynamics/state_layout.h, already of its size): every
 /// link's axis and twist, zero angular velocities, and the stretches at rest (axial elasticity: the

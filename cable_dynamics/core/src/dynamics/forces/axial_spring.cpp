@@ -10,10 +10,10 @@ void computeAxialTensions(const ChainModel& model, ChainData& data, const Eigen:
   const bool body = model.body().active;
   const double* stretch = x.data() + StateLayout::stretch(n, body, 0);
   const double* rate = x.data() + StateLayout::stretchRate(n, body, 0);
-  for (int k = model.firstLink(); k < n; ++k) {
+  for (int k = data.deployed.firstLink(); k < n; ++k) {
     LinkBlock& block = data.links.of(k);
     const int i = LinkBlocks::lane(k);
-    const LinkConstants& c = model.of(k);
+    const LinkConstants& c = data.deployed.of(k);
     // A locked stretch (the last link with nothing beyond it: ChainModel::lastStretchLocked) stays 0.
     const bool locked = model.stretchLocked(k);
     const double s = locked ? 0.0 : stretch[k], v = locked ? 0.0 : rate[k];
@@ -28,8 +28,8 @@ void computeAxialTensions(const ChainModel& model, ChainData& data, const Eigen:
 double axialEnergy(const ChainModel& model, const ChainData& data) {
   if (!model.axial()) return 0.0;
   double sum = 0.0;
-  for (int k = model.firstLink(); k < model.links(); ++k) {
-    sum += AxialSpring::energy(model.of(k).axial_stiffness[LinkBlocks::lane(k)],
+  for (int k = data.deployed.firstLink(); k < model.links(); ++k) {
+    sum += AxialSpring::energy(data.deployed.of(k).axial_stiffness[LinkBlocks::lane(k)],
                                data.links.of(k).stretch[LinkBlocks::lane(k)]);
   }
   return sum;
@@ -38,7 +38,7 @@ double axialEnergy(const ChainModel& model, const ChainData& data) {
 double axialLoss(const ChainModel& model, const ChainData& data) {
   if (!model.axial()) return 0.0;
   double sum = 0.0;
-  for (int k = model.firstLink(); k < model.links(); ++k) sum += data.links.of(k).axial_loss[LinkBlocks::lane(k)];
+  for (int k = data.deployed.firstLink(); k < model.links(); ++k) sum += data.links.of(k).axial_loss[LinkBlocks::lane(k)];
   return sum;
 }
 

@@ -9,9 +9,9 @@ namespace {
 /// The energy the winch pays out with the cable per metre [J/m]: kinetic energy per length of the
 /// material at the base end (translation, and the rotation of the section) plus its potential energy
 /// there. The deployed cable's energy grows by this times the pay-out speed, besides the work done on it.
-double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, const Vec3& exit_velocity) {
-  const int first = model.firstLink();
-  const LinkConstants& c = model.of(first);
+double paidOutEnergyPerLength(const ChainData& data, const Vec3& exit_velocity) {
+  const int first = data.deployed.firstLink();
+  const LinkConstants& c = data.deployed.of(first);
   const LinkBlock& block = data.links.of(first);
   const int i = LinkBlocks::lane(first);
   const double l = c.length[i], per_length = c.mass_per_length[i];
@@ -27,18 +27,18 @@ double paidOutEnergyPerLength(const ChainModel& model, const ChainData& data, co
 
 double endsInputPower(const ChainModel& model, const ChainData& data, const EndInputs& ends,
                       const Eigen::Vector3d& base_force) {
-  const int first = model.firstLink();
+  const int first = data.deployed.firstLink();
   const Vec3 exit_velocity = data.links.of(first).base_vel[LinkBlocks::lane(first)];
   double power = base_force.dot(toEigen(exit_velocity)) + data.coupling.dot(data.tip_velocity) +
                  data.clamp_torque.dot(data.clamp_omega) + data.tip_clamp_torque.dot(data.tip_clamp_omega);
-  if (ends.winch) power += ends.winch_speed * paidOutEnergyPerLength(model, data, exit_velocity);
+  if (ends.winch) power += ends.winch_speed * paidOutEnergyPerLength(data, exit_velocity);
   if (model.body().active) power += data.body.thrust_power;  // after the solve (finishRovBody)
   return power;
 }
 
 double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power) {
   const double body = model.body().active ? data.body.fluid_power : 0.0;  // after the solve (finishRovBody)
-  return data.drag_power + added_mass_power + damperPower(model, data) + jointHoldPower(model, data) -
+  return data.drag_power + added_mass_power + damperPower(model, data) + jointHoldPower(data) -
          data.contact_dissipation + body - axialLoss(model, data);
 }
 

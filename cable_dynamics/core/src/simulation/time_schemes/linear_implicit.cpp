@@ -66,10 +66,10 @@ LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainMod
   // The powers at a stage's state, with its solved accelerations: drag, dampers and added mass taken out;
   // what the base, the coupling and a turning clamp put in. Affine in the accelerations, so the mean of
   // the two stages' is the step's to second order.
-  const int n = model.links(), first = model.firstLink();
+  const int n = model.links(), first = data.deployed.firstLink();
   double added_power = 0.0;
   for (int k = first; k < n; ++k) {
-    const LinkConstants& c = model.of(k);
+    const LinkConstants& c = data.deployed.of(k);
     const LinkBlock& block = data.links.of(k);
     const int i = LinkBlocks::lane(k);
     const StiffLinkTerms& terms = solver_.link(k);
@@ -89,7 +89,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   if (!x.allFinite()) return false;
   const ChainModel& model = f.model();
   const ChainData& data = f.data();
-  const int n = f.links(), first = model.firstLink();
+  const int n = f.links(), first = data.deployed.firstLink();
   const double g = gamma_, gh = gamma_ * h;
   // The state is (phi, w): the links' rotation vectors from x_n's frames and their angular velocities;
   // the matrix of both stages is W = M + g h D + g^2 h^2 K (one recursion each), with K, D the Jacobians
@@ -108,7 +108,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   if (!tensions_known_) {
     solver_.linearize(model, data, start, false);
   } else {
-    solver_.geometricFromLastTension(model);
+    solver_.geometricFromLastTension(model, data);
   }
   solver_.clearExtra();
   for (int k = first; k < n; ++k) {
@@ -121,10 +121,10 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   const Eigen::Vector3d tip_rate1 =
       start.load_coupled ? Eigen::Vector3d(data.tip_velocity - start.target_velocity) : data.tip_velocity;
   const Eigen::Vector3d tip_clamp_rate = data.tip_clamp_omega;
-  solver_.addJacobianTimes(model, -gh, 0.0, omega_, clamp_rate, tip_clamp_rate, translation_, tip_rate1);
+  solver_.addJacobianTimes(model, data, -gh, 0.0, omega_, clamp_rate, tip_clamp_rate, translation_, tip_rate1);
   if (axial_) {  // the stretches as the rotations: -g h K s'_n
     for (int k = 0; k < n; ++k) stretch_rate_(k) = x(StateLayout::stretchRate(n, body_, k));
-    solver_.addStretchJacobianTimes(model, -gh, 0.0, stretch_rate_, stretch_zero_);
+    solver_.addStretchJacobianTimes(model, data, -gh, 0.0, stretch_rate_, stretch_zero_);
   }
   solver_.solve(model, data, gh, gh * gh);
   if (body_) finishRovBody(model.body(), data.tip_known_acc + solver_.tipDelta(), f.data().body);
@@ -181,16 +181,16 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   const Eigen::Vector3d tip_rate2 =
       h * (end.load_coupled ? Eigen::Vector3d(data.tip_velocity - end.target_velocity) : data.tip_velocity) -
       2.0 * g * h * tip_push1;
-  solver_.addJacobianTimes(model, g, 0.0, rotation_, clamp2, tip_clamp2, translation_, 2.0 * tip_shift1 - tip_rate2);
-  solver_.addJacobianTimes(model, 0.0, 2.0 * g, spin1_, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), push1_,
+  solver_.addJacobianTimes(model, data, g, 0.0, rotation_, clamp2, tip_clamp2, translation_, 2.0 * tip_shift1 - tip_rate2);
+  solver_.addJacobianTimes(model, data, 0.0, 2.0 * g, spin1_, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), push1_,
                            tip_push1);
   if (axial_) {  // as the rotations: r2 = h s'_1 - 2 g h ks'1; g K (2 ks1 - r2) + 2 g D ks'1
     for (int k = first; k < n; ++k) {
       stretch_rate2_(k) = h * stage_(StateLayout::stretchRate(n, body_, k)) - 2.0 * g * h * stretch_spin1_(k);
       stretch_scratch_(k) = 2.0 * stretch_turn1_(k) - stretch_rate2_(k);
     }
-    solver_.addStretchJacobianTimes(model, g, 0.0, stretch_scratch_, stretch_zero_);
-    solver_.addStretchJacobianTimes(model, 0.0, 2.0 * g, stretch_zero_, stretch_spin1_);
+    solver_.addStretchJacobianTimes(model, data, g, 0.0, stretch_scratch_, stretch_zero_);
+    solver_.addStretchJacobianTimes(model, data, 0.0, 2.0 * g, stretch_zero_, stretch_spin1_);
   }
   solver_.solve(model, data, gh, gh * gh);
   if (body_) finishRovBody(model.body(), data.tip_known_acc + solver_.tipDelta(), f.data().body);

@@ -10,7 +10,7 @@ bool Rk4Scheme::advance(ChainDynamics& f, const EndConditions& ends, double t, d
   const bool start_known = start_known_;
   start_known_ = false;
   // Only the moving tail of x: a winch's drum slots (the head) neither move nor are read.
-  const int m = StateLayout::moving(x.size(), f.model().firstLink());
+  const int m = StateLayout::moving(x.size(), f.deployed().firstLink());
   if (!start_known && !f.derivative(x, ends.at(t), k1_)) return false;
   stage_.tail(m) = x.tail(m) + 0.5 * h * k1_.tail(m);
   if (!f.derivative(stage_, ends.at(t + 0.5 * h), k2_)) return false;

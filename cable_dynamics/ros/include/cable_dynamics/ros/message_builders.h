@@ -107,7 +107,7 @@ struct NodeStatus {
 
 /// Sizes and names every message once: 3n joints, 2 + 3n transforms, 5 + kSceneMarkerCount + n markers (the
 /// bodies drawn at `shapes`' sizes), n tensions (capacity for every slot), then shapes them for the
-/// configured deployment (shapeOutputs(params.winch.stored_links)).
+/// configured deployment (shapeOutputs(params.drumSlots())).
 void prepareOutputs(const CableParams& params, const CableFrameNames& names, const std::string& world_frame,
                     CableOutputs& out, const BodyShapes& shapes = BodyShapes());
 /// Shapes the messages for the deployed slots [first_link, n): 3 (n - first_link) joints, 2 + 3 (n -
