@@ -395,3 +395,26 @@ TEST(Winch, ResetToEquilibriumKeepsTheWinchRunning) {
   ASSERT_TRUE(sim.step().ok);
   EXPECT_NEAR(sim.winch().motion().speed, before, 0.2 * sim.dt() + 1e-12);
 }
+
+// Issue 22: the model is constant after construction; the winch's deployment lives in the data. Paying out
+// adds links (the data's first slot and winch link change) while every constant the model holds stays as
+// built: the configured lengths and masses of every slot, and the load's. Before the split, the model's
+// own per-link description was the deployed one and changed at every link added.
+TEST(Winch, PayingOutChangesTheDataNotTheModel) {
+  CableSimulator sim(lowering(1025.0, 1.0, 30.0));
+  const ChainModel& model = sim.dynamics().model();
+  const Eigen::VectorXd lengths = model.configured().length, masses = model.configured().mass;
+  const LoadConstants load = model.load();
+  const int first = sim.dynamics().deployed().firstLink();
+  const double winch_link = sim.properties().length(first);
+  for (int i = 0; i < 5000; ++i) ASSERT_TRUE(sim.step().ok);  // 5 s at 1 m/s: links of 2 m added
+  EXPECT_LT(sim.dynamics().deployed().firstLink(), first);
+  EXPECT_NE(sim.properties().length(sim.firstLink()), winch_link);
+  EXPECT_EQ(model.configured().length, lengths);
+  EXPECT_EQ(model.configured().mass, masses);
+  EXPECT_EQ(model.load().inertia, load.inertia);
+  EXPECT_EQ(model.load().weight, load.weight);
+  // The deployed description is the data's: the drum's slots before the first carry nothing.
+  EXPECT_EQ(sim.properties().mass.head(sim.firstLink()).sum(), 0.0);
+  EXPECT_GT(masses.head(sim.firstLink()).sum(), 0.0);
+}
