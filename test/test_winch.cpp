@@ -126,13 +126,24 @@ TEST(Winch, CommandsBeyondTheLimitsAreRefusedNotClamped) {
   }
 }
 
-TEST(Winch, ConfigAddsTheDrumsSlotsInFrontOfTheDeployedCable) {
-  const CableParams p = lowering(1025.0, 0.5, 60.0);
+TEST(Winch, TheModelAddsTheDrumsSlotsInFrontOfTheDeployedCable) {
+  // The loader gives the cable as configured and counts the drum's slots; the model puts them in front
+  // (issue 22: the drum's slots are built by the model, not the loader), once.
+  const CableParams configured = lowering(1025.0, 0.5, 60.0);
+  EXPECT_EQ(configured.links, 10);
+  EXPECT_EQ(configured.link_lengths.size(), 10u);
+  EXPECT_EQ(configured.initial.elevation.size(), 10u);
+  EXPECT_EQ(configured.drumSlots(), 0);
+  EXPECT_DOUBLE_EQ(configured.deployedLength(), 20.0);
+  const CableParams p = ChainModel::withDrumSlots(configured);
   // 40 m more in 2 m links, and one more for the winch's link's band.
   EXPECT_EQ(p.winch.stored_links, 21);
   EXPECT_EQ(p.links, 31);
+  EXPECT_EQ(p.drumSlots(), 21);
   EXPECT_DOUBLE_EQ(p.deployedLength(), 20.0);
-  CableSimulator sim(p);
+  EXPECT_EQ(ChainModel::withDrumSlots(p).links, 31) << "built once";
+  CableSimulator sim(configured);
+  EXPECT_EQ(sim.params().links, 31);
   EXPECT_EQ(sim.firstLink(), 21);
   EXPECT_NEAR(deployedMass(sim), 0.6 * 20.0, 1e-12);
   EXPECT_THROW(loadConfigString("cable: {links: 2, length: 2.0, diameter: 0.02, mass_per_length: 0.5}\n"

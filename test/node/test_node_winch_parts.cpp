@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cable_dynamics/dynamics/chain_model.h"
 #include "cable_dynamics/dynamics/state_layout.h"
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/ros/finite_messages.h"
@@ -27,13 +28,14 @@ namespace {
 const double kNan = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 
-/// test/node/winch_test.yaml without its `ros:` section: 10 links of 2 m deployed, up to 40 m (21 slots).
+/// test/node/winch_test.yaml without its `ros:` section: 10 links of 2 m deployed, up to 40 m (21 slots),
+/// as the node holds it (the simulator's copy, with the drum's slots: CableSimulator::params()).
 CableParams winchParams() {
-  return loadConfigString(
+  return ChainModel::withDrumSlots(loadConfigString(
       "cable: {links: 10, length: 20.0, diameter: 0.03, mass_per_length: 1.5}\n"
       "load: {mass: 40.0, volume: 0.01, drag_area: 0.1}\n"
       "simulation: {dt: 0.001}\n"
-      "winch: {max_length: 40.0, min_length: 6.0, max_speed: 2.0, max_acceleration: 1.0}\n");
+      "winch: {max_length: 40.0, min_length: 6.0, max_speed: 2.0, max_acceleration: 1.0}\n"));
 }
 
 CableFrameNames prefixed() {

@@ -29,7 +29,8 @@ Eigen::Quaterniond attitude(const char* name, const Eigen::Vector4d& xyzw) {
 
 }  // namespace
 
-PythonSimulator::PythonSimulator(const CableParams& params) : params_(params), sim_(params_) {}
+// The simulator's own copy of the parameters, with a winch's drum slots built: what the outputs are sized by.
+PythonSimulator::PythonSimulator(const CableParams& params) : params_(ChainModel::withDrumSlots(params)), sim_(params_) {}
 
 long PythonSimulator::step(long steps) {
   if (steps < 1) throw std::invalid_argument("steps = " + std::to_string(steps) + ": expected at least 1");

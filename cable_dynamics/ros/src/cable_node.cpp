@@ -45,6 +45,7 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   // The gate (checkSimulatorInputs) refuses a dt beyond RK4's reach and the combinations the simulator
   // cannot run, throwing ConfigError naming the key, as cable_sim and Python do.
   sim_ = std::make_unique<CableSimulator>(params_);
+  params_ = sim_->params();  // the model's copy: with a winch, the drum's slots that every output has
   if (params_.load.mode == LoadMode::kAttached && options_.min_rov_mass > 0.0) {
     // The ROV feels the coupling one exchange late: sized for the lightest ROV at the exchange's delay,
     // first for an exchange at this node's own rate, then as the pose stream's stamps measure it.

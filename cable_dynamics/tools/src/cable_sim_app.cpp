@@ -145,6 +145,7 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
     err << "cable_sim: " << e.what() << "\n";
     return 6;
   }
+  params = simulator->params();  // the model's copy: with a winch, the drum's slots the CSV has columns for
   if (o.statics) return writeStatics(*simulator, params, o.output, err);
   CableSimulator& sim = *simulator;
   const StableStep stable = estimateStableStep(params, sim.properties());

@@ -7,7 +7,22 @@
 
 namespace cable_dynamics {
 
-ChainModel::ChainModel(const CableParams& params)
+CableParams ChainModel::withDrumSlots(const CableParams& configured) {
+  CableParams p = configured;
+  if (!p.winch.enabled || p.winch.slots_built) return p;
+  const int stored = p.winch.stored_links;
+  p.links += stored;
+  p.link_lengths.insert(p.link_lengths.begin(), stored, p.winch.link_length);
+  for (std::vector<double>* v : {&p.initial.elevation, &p.initial.azimuth, &p.initial.torsion}) {
+    v->insert(v->begin(), stored, 0.0);  // on the drum: straight down, at rest (no length, no mass)
+  }
+  p.winch.slots_built = true;
+  return p;
+}
+
+ChainModel::ChainModel(const CableParams& configured) : ChainModel(withDrumSlots(configured), 0) {}
+
+ChainModel::ChainModel(const CableParams& params, int /*slots built*/)
     : n_(params.links),
       has_winch_(params.winch.enabled),
       nominal_(deriveLinkProperties(params)),

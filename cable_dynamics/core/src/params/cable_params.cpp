@@ -11,7 +11,7 @@ double CableParams::totalLength() const {
 }
 
 double CableParams::deployedLength() const {
-  return std::accumulate(link_lengths.begin() + winch.stored_links, link_lengths.end(), 0.0);
+  return std::accumulate(link_lengths.begin() + drumSlots(), link_lengths.end(), 0.0);
 }
 
 bool CableParams::stretches() const {
@@ -37,7 +37,7 @@ static std::vector<SectionParams> effectiveSections(const CableParams& params) {
 }
 
 LinkProperties deriveLinkProperties(const CableParams& params) {
-  const int n = params.links, stored = params.winch.stored_links;
+  const int n = params.links, stored = params.drumSlots();
   const double rho = params.fluid.density;
   const std::vector<SectionParams> sections = effectiveSections(params);
   LinkProperties p;

@@ -317,7 +317,8 @@ void parseAttachments(const YAML::Node& rows, CableParams& p) {
   }
 }
 
-/// `winch:` (after everything else: it adds the drum's slots in front of the configured cable).
+/// `winch:` (after everything else: it counts the drum's slots the model will put in front of the
+/// configured cable, ChainModel::withDrumSlots).
 void parseWinch(Section winch, CableParams& p) {
   WinchParams& w = p.winch;
   const double deployed = p.totalLength();
@@ -362,11 +363,6 @@ void parseWinch(Section winch, CableParams& p) {
                       "at most " + std::to_string(kMaxLinks) + " links of " + std::to_string(link) + " m in all");
   }
   w.stored_links = stored;
-  p.links += stored;
-  p.link_lengths.insert(p.link_lengths.begin(), stored, link);
-  for (std::vector<double>* v : {&p.initial.elevation, &p.initial.azimuth, &p.initial.torsion}) {
-    v->insert(v->begin(), stored, 0.0);  // on the drum: straight down, at rest (no length, no mass)
-  }
 }
 
 }  // namespace

@@ -21,23 +21,23 @@ void checkSimulatorInputs(const CableParams& params, const LinkProperties& prope
   if (use == SimulatorUse::kStepping) requireStableTimeStep(params, properties);  // not for the two others
 }
 
-CableSimulator::CableSimulator(const CableParams& params, SimulatorUse use)
-    : params_(params),
+CableSimulator::CableSimulator(const CableParams& configured, SimulatorUse use)
+    : params_(ChainModel::withDrumSlots(configured)),
       use_(use),
-      dynamics_(params),
-      scheme_(makeTimeScheme(params.simulation.integrator, params.links, params.simulation.rho_infinity,
-                             params.load.mode == LoadMode::kBody, params.stretches())),
-      ends_(params.base, params.load, params.winch),
-      limits_(stepLimits(*std::min_element(params.link_lengths.begin(), params.link_lengths.end()), params.gravity)),
-      dt_(params.simulation.dt) {
-  checkSimulatorInputs(params, dynamics_.properties(), use);  // the gate: refused before anything runs
+      dynamics_(params_),
+      scheme_(makeTimeScheme(params_.simulation.integrator, params_.links, params_.simulation.rho_infinity,
+                             params_.load.mode == LoadMode::kBody, params_.stretches())),
+      ends_(params_.base, params_.load, params_.winch),
+      limits_(stepLimits(*std::min_element(params_.link_lengths.begin(), params_.link_lengths.end()), params_.gravity)),
+      dt_(params_.simulation.dt) {
+  checkSimulatorInputs(params_, dynamics_.properties(), use);  // the gate: refused before anything runs
   ends_.setRestClamp(dynamics_.properties().clamp_axis, dynamics_.properties().clamp_twist);
   const int size = dynamics_.stateSize();
   x_.setZero(size);
   x_start_.setZero(size);
-  slack_.assign(params.links, 1);
-  q_.setZero(3 * params.links);
-  qd_.setZero(3 * params.links);
+  slack_.assign(params_.links, 1);
+  q_.setZero(3 * params_.links);
+  qd_.setZero(3 * params_.links);
   reset();
 }
 

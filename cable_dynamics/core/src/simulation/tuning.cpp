@@ -18,7 +18,8 @@ const std::array<TunableKey, 5> kTunableKeys = {{
     {"load.coupling.damping", [](CableParams& p) -> double& { return p.load.coupling_damping; }, nullptr},
 }};
 
-void CableSimulator::retune(const CableParams& params) {
+void CableSimulator::retune(const CableParams& tuned) {
+  const CableParams params = ChainModel::withDrumSlots(tuned);  // the config's or the model's copy alike
   if (params.links != params_.links || params.sections.size() != params_.sections.size()) {
     throw std::invalid_argument("retune: the tuned parameters describe another cable (" +
                                 std::to_string(params.links) + " links, " + std::to_string(params.sections.size()) +

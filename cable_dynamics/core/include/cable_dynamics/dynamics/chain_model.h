@@ -39,7 +39,14 @@ struct LoadConstants {
 /// description: reports, the URDF, the paper model), and the cable-wide scalars.
 class ChainModel {
  public:
+  /// From the configured parameters (or the model's copy: withDrumSlots is applied once).
   explicit ChainModel(const CableParams& params);
+
+  /// The parameters as the model uses them: with a winch, `configured` with the drum's
+  /// winch.stored_links slots in front of the configured cable (links, link_lengths, initial.*; each slot
+  /// of the base link's configured length, straight down and at rest) and winch.slots_built set. Without a
+  /// winch, or when the slots are already built, `configured` as it is.
+  static CableParams withDrumSlots(const CableParams& configured);
 
   int links() const { return n_; }
   /// Per-link description of every slot as configured (a winch's drum slots at the length they will have
@@ -109,6 +116,8 @@ class ChainModel {
   bool stretchLocked(int k) const { return k == n_ - 1 && lastStretchLocked(); }
 
  private:
+  /// The constructor proper, from parameters with the drum's slots built (withDrumSlots).
+  ChainModel(const CableParams& params, int slots_built);
   /// Slot k's lane constants and mass properties in `d` for length `length` [m] (0: on the drum).
   void setLinkLength(ChainDeployment& d, int k, double length) const;
 

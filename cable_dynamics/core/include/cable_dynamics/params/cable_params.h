@@ -226,9 +226,13 @@ struct WinchParams {
   double max_acceleration = 0.5;  ///< [m/s^2]
   double speed = 0.0;             ///< commanded speed at start [m/s]
   std::vector<WinchCommand> schedule;  ///< time-ordered commands (offline runs)
-  /// Slots [0, stored_links) are the cable still on the drum (CableParams::links counts every slot);
-  /// the configured cable.links are deployed behind them. Set by the config loader.
+  /// The slots the drum needs for the longest deployment, in front of the configured cable.links: the
+  /// config loader counts them (and refuses more than kMaxLinks in all); the model puts them in front of
+  /// the configured cable (ChainModel::withDrumSlots), which marks it in `slots_built`.
   int stored_links = 0;
+  /// true in the model's copy of the parameters, where links, link_lengths and initial.* count the drum's
+  /// slots too (CableSimulator::params()); false as the config loader gives them: the configured cable.
+  bool slots_built = false;
   double link_length = 0.0;       ///< length of a link added at the winch [m] (the base link's configured length)
 };
 
@@ -303,8 +307,9 @@ struct SeabedParams {
 
 /// Every parameter of one cable, validated by the config loader; SI units.
 struct CableParams {
-  /// n, number of rigid links; with a winch, every slot the longest deployment needs (the first
-  /// winch.stored_links of them start on the drum).
+  /// n, number of rigid links as configured (cable.links). In the model's copy with a winch
+  /// (winch.slots_built: ChainModel::withDrumSlots), every slot the longest deployment needs, the first
+  /// winch.stored_links of them on the drum at start; so also link_lengths and initial.*.
   int links = 1;
   std::vector<double> link_lengths;       ///< (n) [m]; slots on the drum: the length they will have
   WinchParams winch;
@@ -332,13 +337,13 @@ struct CableParams {
   InitialState initial;
   SimulationParams simulation;
 
-  /// Total length of every slot [m].
+  /// Total length of every link [m] (with the drum's slots built: of every slot, the longest deployment).
   double totalLength() const;
   /// Deployed length at start [m] (totalLength() without a winch).
   double deployedLength() const;
   /// The slots on the winch's drum at start, [0, drumSlots()) (0 without a winch): where the configured
   /// deployment's base link is. Adapters read this, never winch.stored_links.
-  int drumSlots() const { return winch.enabled ? winch.stored_links : 0; }
+  int drumSlots() const { return winch.enabled && winch.slots_built ? winch.stored_links : 0; }
   /// true when the links stretch: cable.axial_stiffness or a section's is > 0.
   bool stretches() const;
 };

@@ -116,7 +116,13 @@ class CableSimulator {
   /// Throws ConfigError (a std::invalid_argument) when checkSimulatorInputs() refuses `params` (a
   /// dt beyond RK4's reach, the paper model's azimuth or torsion springs, a broken rule between keys),
   /// and std::runtime_error when `initial.mode: equilibrium` finds no equilibrium (the message says why).
+  /// `params` as the config loader gives them (or a simulator's params(): the drum's slots are built once).
   explicit CableSimulator(const CableParams& params, SimulatorUse use = SimulatorUse::kStepping);
+
+  /// The parameters as the model uses them: the configured ones with, under a winch, the drum's slots in
+  /// front (ChainModel::withDrumSlots; links, link_lengths and initial.* count every slot). What adapters
+  /// size their per-link outputs by.
+  const CableParams& params() const { return params_; }
 
   /// Back to the configured initial state and inputs at t = 0. With `initial.mode: equilibrium`, throws
   /// std::runtime_error when the statics find no equilibrium (the state is then the angles').
