@@ -40,7 +40,6 @@ struct Node {
     names.prefix = "limits_test/";
     prepareOutputs(p, names, "world", outputs);
     source.spring_force = Eigen::VectorXd::Zero(3 * p.links);
-    source.alpha_hint = Eigen::VectorXd::Zero(p.links);
   }
   /// One published cycle as CableNode::publishOutputs has it, allocations counted.
   void cycle(MarkerColour colour) {

@@ -203,7 +203,6 @@ TEST(WinchOutputs, FilledFromASimulatorThatPaysOutAndHaulsIn) {
   prepareOutputs(p, names, "world", o);
   OutputSource source;
   source.spring_force = Eigen::VectorXd::Zero(3 * p.links);
-  source.alpha_hint = Eigen::VectorXd::Zero(p.links);
   NodeStatus status;
   const auto publish = [&] {
     ASSERT_TRUE(readOutputs(sim, source));
@@ -243,7 +242,7 @@ TEST(WinchOutputs, FilledFromASimulatorThatPaysOutAndHaulsIn) {
     EXPECT_EQ(o.transforms[1].child_frame_id, names.link(first + 1));
     EXPECT_NEAR(o.transforms[1].transform.translation.z, 0.0, 1e-12) << "the base link's frame is at the base";
     EXPECT_EQ(o.transforms[4].child_frame_id, names.link(first + 2));
-    EXPECT_DOUBLE_EQ(o.transforms[4].transform.translation.z, source.links[first + 1].position.z());
+    EXPECT_DOUBLE_EQ(o.transforms[4].transform.translation.z, source.snapshot.link_frames[first + 1].position.z());
     const auto& line = o.markers.markers[0];
     ASSERT_EQ(line.points.size(), std::size_t(deployed + 1));
     EXPECT_DOUBLE_EQ(line.points.back().z, s.chain.ends(2, p.links));
@@ -321,7 +320,6 @@ TEST(AxialOutputs, CableStateAndDiagnosticsCarryTheStretches) {
   ASSERT_EQ(o.state.strain.size(), std::size_t(p.links));
   OutputSource source;
   source.spring_force = Eigen::VectorXd::Zero(3 * p.links);
-  source.alpha_hint = Eigen::VectorXd::Zero(p.links);
   NodeStatus status;
   auto fill = [&] {
     ASSERT_TRUE(readOutputs(sim, source));
@@ -352,7 +350,7 @@ TEST(AxialOutputs, CableStateAndDiagnosticsCarryTheStretches) {
   // Each link's TF frame sits at its base end as the dynamics have it, stretches included (the line is
   // stretched by millimetres here; summed rounding 1e-15 m).
   for (int k = 0; k < p.links; ++k) {
-    EXPECT_LT((source.links[k].position - source.snapshot.chain.ends.col(k)).norm(), 1e-12) << "link " << k;
+    EXPECT_LT((source.snapshot.link_frames[k].position - source.snapshot.chain.ends.col(k)).norm(), 1e-12) << "link " << k;
   }
   std::map<std::string, std::string> values;
   for (const auto& kv : o.diagnostics.status[0].values) values[kv.key] = kv.value;

@@ -26,7 +26,6 @@ TEST(PublishedEfforts, AreTheModelsWithATurningClamp) {
   CableSimulator sim(params);
   OutputSource source;
   source.spring_force = Eigen::VectorXd::Zero(3 * params.links);
-  source.alpha_hint = Eigen::VectorXd::Zero(params.links);
   double worst = 0.0, largest = 0.0;
   for (int i = 1; i <= 8000; ++i) {
     ASSERT_TRUE(sim.step().ok);

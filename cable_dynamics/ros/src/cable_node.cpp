@@ -101,7 +101,6 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   nh_.setParam("robot_description", cableUrdf(deriveLinkProperties(params_), names_));
   prepareOutputs(params_, names_, options_.world_frame, outputs_, options_.shapes);
   source_.spring_force = Eigen::VectorXd::Zero(3 * params_.links);
-  source_.alpha_hint = Eigen::VectorXd::Zero(params_.links);
 
   joint_pub_.advertise(nh_, "joint_states", 10);
   state_pub_.advertise(nh_, "cable_state", 10);
@@ -542,7 +541,6 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
   }
   restoreLivePoses();
   restartClock();  // the simulator's time is 0 again
-  source_.alpha_hint.setZero();
   // Tuned coefficients stay (they are the simulator's now); a tuned current is an input like the topic's
   // and comes back unless the topic publishes; the winch is back at its configured speed.
   if (current_tuned_ && !currentTopicActive()) sim_->setCurrent(tuned_.current);
@@ -569,7 +567,6 @@ bool CableNode::onResetToEquilibrium(cable_msgs::ResetToEquilibrium::Request&,
   SimulationSnapshot snapshot;
   sim_->snapshot(snapshot);
   res.line_pull = snapshot.line_pull;
-  source_.alpha_hint.setZero();
   std::ostringstream text;
   text << "at rest in the static equilibrium (" << s.iterations << " Newton iterations, residual " << s.residual
        << ", line pull " << snapshot.line_pull << " N)";

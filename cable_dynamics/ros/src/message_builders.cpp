@@ -267,13 +267,15 @@ void fillJointState(const OutputSource& source, const ros::Time& stamp, sensor_m
 
 void fillTransforms(const OutputSource& source, const Eigen::Vector3d& base_position, const ros::Time& stamp,
                     std::vector<geometry_msgs::TransformStamped>& transforms) {
-  const int n = static_cast<int>(source.links.size()), first = source.snapshot.first_link;
+  const PoseVector& links = source.snapshot.link_frames;
+  const int n = static_cast<int>(links.size()), first = source.snapshot.first_link;
   setPose(transforms[0].transform, base_position, kPaperInWorld);
   for (int k = first; k < n; ++k) {  // a link on the drum has no frame
     const int i = 3 * (k - first);
-    setPose(transforms[1 + i].transform, source.links[k].position, source.links[k].orientation);
-    setPose(transforms[2 + i].transform, source.after_azimuth[k].position, source.after_azimuth[k].orientation);
-    setPose(transforms[3 + i].transform, source.after_elevation[k].position, source.after_elevation[k].orientation);
+    const Pose &link = links[k], &azimuth = source.snapshot.after_azimuth[k], &elevation = source.snapshot.after_elevation[k];
+    setPose(transforms[1 + i].transform, link.position, link.orientation);
+    setPose(transforms[2 + i].transform, azimuth.position, azimuth.orientation);
+    setPose(transforms[3 + i].transform, elevation.position, elevation.orientation);
   }
   // The load frame is aligned with the world frame (only translated), so the wrench reads in world axes.
   setPose(transforms.back().transform, source.snapshot.chain.ends.col(n), kPaperInWorld.conjugate());

@@ -133,7 +133,7 @@ void fillTubeMarkers(const OutputSource& source, double tension_scale, visualiza
     m.action = visualization_msgs::Marker::ADD;
     // A cylinder's axis is its z: the link frame's (z along the link), centred between the link's ends.
     setPoint(m.pose.position, 0.5 * (c.ends.col(k) + c.ends.col(k + 1)));
-    setOrientation(m.pose.orientation, source.links[k].orientation);
+    setOrientation(m.pose.orientation, source.snapshot.link_frames[k].orientation);
     m.scale.z = (c.ends.col(k + 1) - c.ends.col(k)).norm();  // the base link's changes with a winch [m]
     m.color = by_utilisation ? utilisationColor(c.limits.utilisation(k)) : tensionColor(c.tension(k), tension_scale);
   }

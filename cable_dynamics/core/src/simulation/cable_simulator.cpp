@@ -36,6 +36,8 @@ CableSimulator::CableSimulator(const CableParams& configured, SimulatorUse use)
   x_.setZero(size);
   x_start_.setZero(size);
   slack_.assign(params_.links, 1);
+  alpha_hint_.setZero(params_.links);
+  levers_.setZero(params_.links);
   q_.setZero(3 * params_.links);
   qd_.setZero(3 * params_.links);
   reset();
@@ -168,6 +170,7 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   start_balance_known_ = false;
   drift_reference_known_ = false;
   largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
+  alpha_hint_.setZero();  // a new state: the URDF's frames start afresh
   scheme_->forget();
   // The winch keeps running at its speed (stopping it in one step broke its acceleration limit).
   if (hasWinch()) ends_.winch().moveTo(ends_.winch().motion().length);
@@ -279,6 +282,7 @@ void CableSimulator::setState(const Eigen::VectorXd& x) {
   start_balance_known_ = false;
   drift_reference_known_ = false;
   largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
+  alpha_hint_.setZero();  // a new state: the URDF's frames start afresh
   scheme_->forget();
 }
 
@@ -294,6 +298,7 @@ void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::Vector
   start_balance_known_ = false;
   drift_reference_known_ = false;
   largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
+  alpha_hint_.setZero();  // a new state: the URDF's frames start afresh
   retried_steps_ = 0;
   scheme_->forget();
   // Continue azimuths from the given angles (straight-down links keep the azimuth they were given).
@@ -440,6 +445,13 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
     out.axes.col(k) = x_.segment<3>(StateLayout::axis(k)).normalized();
     out.twists(k) = x_(StateLayout::twist(k));
   }
+  // The link frames at the links' stretched lengths, so that they sit on the ends above (sized after the
+  // first snapshot: no allocation).
+  levers_ = dynamics_.properties().length;
+  if (out.chain.stretch.size() == n) levers_ += out.chain.stretch;
+  linkFrames(out.axes, out.twists, out.chain.ends.col(0), levers_, out.link_frames, out.after_azimuth,
+             out.after_elevation, alpha_hint_);
+  if (!alpha_hint_.allFinite()) alpha_hint_.setZero();  // never let a bad hint outlive this instant
   out.dissipated_energy = x_(StateLayout::dissipated(n));
   out.work_input = x_(StateLayout::workInput(n));
   out.total_energy = out.chain.kinetic_energy + out.chain.potential_energy + out.chain.elastic_energy + out.chain.contact_energy +

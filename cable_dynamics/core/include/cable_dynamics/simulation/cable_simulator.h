@@ -13,6 +13,7 @@
 #include "cable_dynamics/params/cable_params.h"
 #include "cable_dynamics/simulation/body_motion.h"
 #include "cable_dynamics/simulation/end_conditions.h"
+#include "cable_dynamics/simulation/link_frames.h"
 #include "cable_dynamics/simulation/stable_step.h"
 #include "cable_dynamics/simulation/station_keeper.h"
 #include "cable_dynamics/simulation/step_check.h"
@@ -50,6 +51,11 @@ struct SimulationSnapshot {
   long snaps = 0;                ///< axial elasticity: CableSimulator::snaps()
   Eigen::Matrix3Xd axes;   ///< (3 x n) unit axis of each link, base end to far end [-]
   Eigen::VectorXd twists;  ///< (n) each link's total twist about the vertical, sigma = psi + phi [rad]
+  /// (n each) Each link's frame (origin at its base end, z along the link, at its stretched length with
+  /// axial elasticity) and the URDF's two intermediate frames between neighbours (after the azimuth and
+  /// the elevation joint), paper frame (link_frames.h): computed once, by the simulator, for the TF frames,
+  /// the URDF and the markers.
+  PoseVector link_frames, after_azimuth, after_elevation;
   double dissipated_energy = 0.0;  ///< taken out by drag, added mass, dampers and the seabed since reset [J]
   double work_input = 0.0;         ///< done on the cable by the moving base and the load coupling [J]
   /// kinetic + potential + elastic + seabed contact + dissipated - work input: constant up to the
@@ -281,6 +287,9 @@ class CableSimulator {
   EnergyBalance start_balance_;
   // Drift of the balance since reset (energyDrift()).
   bool drift_reference_known_ = false;
+  /// Keeps the URDF's azimuth continuous from one snapshot to the next where the elevation is 0
+  /// (linkFrames); zeroed by a new state. `levers_`: each link's base end to far end, the snapshot's scratch [m].
+  Eigen::VectorXd alpha_hint_, levers_;
   double drift_reference_ = 0.0;        ///< the balance the drift is measured from [J]
   double largest_scale_ = 0.0;          ///< the largest mechanical magnitude seen [J]
   double energy_drift_ = 0.0;           ///< [-]

@@ -1,12 +1,11 @@
 #pragma once
 /// \file
-/// \brief What the node publishes about one instant, read from the simulator: the snapshot and what is
-///        derived from it for the messages (link frames). Checked finite as a whole.
+/// \brief What the node publishes about one instant, read from the simulator: the snapshot (link frames
+///        included) and the winch's state. Checked finite as a whole.
 
 #include <Eigen/Core>
 
 #include "cable_dynamics/simulation/cable_simulator.h"
-#include "cable_dynamics/simulation/link_frames.h"
 
 namespace cable_dynamics {
 
@@ -25,11 +24,6 @@ struct OutputSource {
   SimulationSnapshot snapshot;
   WinchReading winch;
   Eigen::VectorXd spring_force;      ///< (3n) dV/dq of the joint springs (dampers excluded), the snapshot's; JointState effort = -this [N m]
-  PoseVector links;                  ///< (n) link frames, paper frame
-  PoseVector after_azimuth;          ///< (n) the URDF's frame after the azimuth joint, paper frame
-  PoseVector after_elevation;        ///< (n) the URDF's frame after the elevation joint, paper frame
-  Eigen::VectorXd alpha_hint;        ///< (n) keeps the URDF's azimuth continuous (linkFrames) [rad]
-  Eigen::VectorXd levers;            ///< (n) base end to far end of each link, l + s with axial elasticity [m]
 };
 
 /// Fills `out` from the simulator's present state. Returns false when the state cannot be evaluated or
