@@ -85,7 +85,7 @@ TEST(CableLimits, BendRadiusOfAClampedCableUnderATipMomentConvergesAtSecondOrder
     SimulationSnapshot s;
     arcAtRest(n, s);
     const LimitReport& limits = s.chain.limits;
-    const double moment = s.rov.moment_world.norm();  // the tip clamp's, on the anchor [N m]
+    const double moment = s.rov.moment.norm();  // the tip clamp's, on the anchor [N m]
     const double truth = kRigidity / moment;           // EI / M [m]
     ASSERT_EQ(limits.bend_radius.size(), n);
     double worst = 0.0;

@@ -15,8 +15,9 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include "cable_dynamics/params/config_loader.h"
+#include "cable_dynamics/dynamics/frames.h"
 #include "cable_dynamics/dynamics/rov_body.h"
+#include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
 
 using namespace cable_dynamics;
@@ -318,16 +319,13 @@ TEST(RovBodyOnTether, TheStationKeeperHoldsItsTargetAgainstAThrust) {
 
 namespace {
 
-/// The world frame (z up) from the paper frame (z down): the half turn about x.
-Eigen::Vector3d paperToWorldPoint(const Eigen::Vector3d& p) { return {p.x(), -p.y(), -p.z()}; }
-
 /// Body and tether's centre of mass (world axes, from the base's rest position) [m]: each link's at its
 /// middle (a uniform rod), the body's at O + R r_g.
 Eigen::Vector3d centreOfMass(CableSimulator& sim, const SimulationSnapshot& s, double link_mass, double body_mass,
                              const Eigen::Vector3d& cog) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   const int n = static_cast<int>(s.chain.ends.cols()) - 1;
-  for (int k = 0; k < n; ++k) sum += link_mass * paperToWorldPoint(0.5 * (s.chain.ends.col(k) + s.chain.ends.col(k + 1)));
+  for (int k = 0; k < n; ++k) sum += link_mass * paperToWorld(0.5 * (s.chain.ends.col(k) + s.chain.ends.col(k + 1)));
   const BodyPose pose = sim.bodyPose();
   sum += body_mass * (pose.position + pose.attitude * cog);
   return sum / (n * link_mass + body_mass);
@@ -354,11 +352,11 @@ TEST(RovBodyOnTether, MomentumChangesByTheExternalImpulse) {
     const auto record = [&] {
       sim.snapshot(s);
       centre.push_back(centreOfMass(sim, s, link_mass, body_mass, cog));
-      const Eigen::Vector3d thrust = s.rov_attitude * s.rov_thrust.head<3>();
-      external.push_back(total * gravity_world - paperToWorldPoint(s.chain.base_force) + thrust);
+      const Eigen::Vector3d thrust = paperToWorldAttitude(s.rov_attitude) * s.rov_thrust.head<3>();  // world axes
+      external.push_back(total * gravity_world - paperToWorld(s.chain.base_force) + thrust);
       // The tip and the body's attachment point are one point (the ball joint).
       const BodyPose pose = sim.bodyPose();
-      EXPECT_LT((paperToWorldPoint(s.chain.ends.col(5)) - (pose.position + pose.attitude * Eigen::Vector3d(-0.2, 0.05, 0.1))).norm(), 1e-9);
+      EXPECT_LT((paperToWorld(s.chain.ends.col(5)) - (pose.position + pose.attitude * Eigen::Vector3d(-0.2, 0.05, 0.1))).norm(), 1e-9);
     };
     record();
     const int steps = static_cast<int>(std::lround(2.0 / dt));

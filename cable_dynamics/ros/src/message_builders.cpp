@@ -408,11 +408,14 @@ void fillWrenches(const OutputSource& source, const Eigen::Vector3d& base_positi
     setVector(msg.wrench.torque, moment);
   };
   set(out.wrench, s.rov.force_body, s.rov.moment_body);
-  set(out.wrench_world, s.rov.force_world, Eigen::Vector3d::Zero());
+  // The snapshot is in the paper frame: the world-axes messages and the bodies' frames turn it here.
+  set(out.wrench_world, paperToWorld(s.rov.force), Eigen::Vector3d::Zero());
   set(out.base_wrench, s.vessel.force_body, s.vessel.moment_body);
-  set(out.base_wrench_world, s.vessel.force_world, s.vessel.moment_world);
-  setPose(out.body_transforms[0].transform, base_position + s.vessel_origin, s.vessel_attitude);
-  setPose(out.body_transforms[1].transform, base_position + s.rov_origin, s.rov_attitude);
+  set(out.base_wrench_world, paperToWorld(s.vessel.force), paperToWorld(s.vessel.moment));
+  setPose(out.body_transforms[0].transform, base_position + paperToWorld(s.vessel_origin),
+          paperToWorldAttitude(s.vessel_attitude));
+  setPose(out.body_transforms[1].transform, base_position + paperToWorld(s.rov_origin),
+          paperToWorldAttitude(s.rov_attitude));
   for (auto& t : out.body_transforms) t.header.stamp = stamp;
 }
 

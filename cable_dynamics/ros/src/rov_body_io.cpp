@@ -4,6 +4,7 @@
 
 #include <tf2_eigen/tf2_eigen.h>
 
+#include "cable_dynamics/dynamics/frames.h"
 #include "cable_dynamics/params/format_values.h"
 #include "cable_dynamics/params/input_gate.h"
 
@@ -14,8 +15,9 @@ void fillRovOdometry(const SimulationSnapshot& s, const Eigen::Vector3d& base_po
   out.header.stamp = stamp;
   out.header.frame_id = world_frame;
   out.child_frame_id = rov_frame;
-  out.pose.pose.position = tf2::toMsg(Eigen::Vector3d(s.rov_origin + base_position));
-  out.pose.pose.orientation = tf2::toMsg(s.rov_attitude);
+  // From the snapshot's paper frame to the world frame.
+  out.pose.pose.position = tf2::toMsg(Eigen::Vector3d(paperToWorld(s.rov_origin) + base_position));
+  out.pose.pose.orientation = tf2::toMsg(paperToWorldAttitude(s.rov_attitude));
   // The twist in the ROV's frame (REP-105's child frame).
   tf2::toMsg(Eigen::Vector3d(s.rov_attitude.conjugate() * s.rov_velocity), out.twist.twist.linear);
   tf2::toMsg(s.rov_angular_velocity, out.twist.twist.angular);

@@ -48,12 +48,12 @@ void bodyPointAt(const MotionParams& m, const Eigen::Vector3d& offset, double t,
   a += acceleration * offset;
 }
 
-BodyWrench wrenchAboutOrigin(const Eigen::Vector3d& force_world, const Eigen::Quaterniond& attitude,
+BodyWrench wrenchAboutOrigin(const Eigen::Vector3d& force, const Eigen::Quaterniond& attitude,
                              const Eigen::Vector3d& offset) {
   BodyWrench w;
-  w.force_world = force_world;
-  w.moment_world = (attitude * offset).cross(force_world);
-  w.force_body = attitude.conjugate() * force_world;
+  w.force = force;
+  w.moment = (attitude * offset).cross(force);
+  w.force_body = attitude.conjugate() * force;
   w.moment_body = offset.cross(w.force_body);
   return w;
 }

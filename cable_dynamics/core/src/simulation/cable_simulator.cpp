@@ -83,13 +83,6 @@ void CableSimulator::reset() {
   }
 }
 
-namespace {
-/// The world frame from the paper frame: the half turn about x (frames.h), on a rotation.
-Eigen::Matrix3d paperToWorldRotation(const Eigen::Matrix3d& paper) {
-  return Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal() * paper;
-}
-}  // namespace
-
 BodyPose CableSimulator::bodyPose() {
   BodyPose pose;
   if (!hasBody()) return pose;
@@ -97,7 +90,9 @@ BodyPose CableSimulator::bodyPose() {
   const ChainData& data = dynamics_.data();
   const RovBodyTerms& body = data.body;
   pose.position = paperToWorld(rovBodyOrigin(dynamics_.model().body(), body.rotation, data.tip_position));
-  pose.attitude = Eigen::Quaterniond(paperToWorldRotation(body.rotation)).normalized();
+  // The world frame's rotation from the body: the half turn about x (frames.h) after the paper frame's.
+  const Eigen::Matrix3d world_from_body = Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal() * body.rotation;
+  pose.attitude = Eigen::Quaterniond(world_from_body).normalized();
   pose.velocity = paperToWorld(body.rotation * body.velocity.head<3>());
   pose.angular_velocity = body.omega;
   return pose;
@@ -462,31 +457,32 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.deployed_length = deployedLength();
   out.winch_speed = hasWinch() ? ends_.winch().motion().speed : 0.0;
   out.line_pull = out.chain.tension(out.first_link);
-  out.vessel_attitude = ends_.baseAttitude(time_);
-  out.rov_attitude = ends_.loadAttitude(time_);
+  // The bodies in the paper frame like the cable (the inputs' attitudes are the world frame's).
+  out.vessel_attitude = worldToPaperAttitude(ends_.baseAttitude(time_));
+  out.rov_attitude = worldToPaperAttitude(ends_.loadAttitude(time_));
   out.rov_velocity.setZero();
   out.rov_angular_velocity.setZero();
   out.rov_thrust = applied_thrust_;
   if (hasBody()) {  // from the evaluation above: the body's terms at x
     const RovBodyTerms& body = dynamics_.data().body;
-    out.rov_attitude = Eigen::Quaterniond(paperToWorldRotation(body.rotation)).normalized();
-    out.rov_velocity = paperToWorld(body.rotation * body.velocity.head<3>());
+    out.rov_attitude = Eigen::Quaterniond(body.rotation).normalized();
+    out.rov_velocity = body.rotation * body.velocity.head<3>();
     out.rov_angular_velocity = body.omega;
   }
-  out.vessel_origin = paperToWorld(ends.base_position) - out.vessel_attitude * params_.base.hang_off;
-  out.rov_origin = paperToWorld(ends.load_coupled ? ends.target_position : out.chain.ends.col(n)) -
+  out.vessel_origin = ends.base_position - out.vessel_attitude * params_.base.hang_off;
+  out.rov_origin = (ends.load_coupled ? ends.target_position : Eigen::Vector3d(out.chain.ends.col(n))) -
                    out.rov_attitude * params_.load.attachment;
-  out.vessel = wrenchAboutOrigin(paperToWorld(out.chain.base_force), out.vessel_attitude, params_.base.hang_off);
+  out.vessel = wrenchAboutOrigin(out.chain.base_force, out.vessel_attitude, params_.base.hang_off);
   const Eigen::Vector3d on_rov =
       params_.load.mode == LoadMode::kAttached ? Eigen::Vector3d(-out.chain.coupling_force) : out.chain.load_force;
-  out.rov = wrenchAboutOrigin(paperToWorld(on_rov), out.rov_attitude, params_.load.attachment);
+  out.rov = wrenchAboutOrigin(on_rov, out.rov_attitude, params_.load.attachment);
   // A clamped base holds the base link with a torque, and a clamped tip the last link: the vessel and
   // the ROV (or anchor) feel their opposites.
-  const Eigen::Vector3d base_clamp = -paperToWorld(dynamics_.data().clamp_torque);
-  out.vessel.moment_world += base_clamp;
+  const Eigen::Vector3d base_clamp = -dynamics_.data().clamp_torque;
+  out.vessel.moment += base_clamp;
   out.vessel.moment_body += out.vessel_attitude.conjugate() * base_clamp;
-  const Eigen::Vector3d tip_clamp = -paperToWorld(dynamics_.data().tip_clamp_torque);
-  out.rov.moment_world += tip_clamp;
+  const Eigen::Vector3d tip_clamp = -dynamics_.data().tip_clamp_torque;
+  out.rov.moment += tip_clamp;
   out.rov.moment_body += out.rov_attitude.conjugate() * tip_clamp;
   couplingPort(ends, out);
 }
@@ -498,10 +494,10 @@ void CableSimulator::couplingPort(const EndInputs& ends, SimulationSnapshot& out
   // The coupling force on the ROV is k (tip - point) + c (tip velocity - point velocity) at the present
   // tip state: its derivatives in the point's position and velocity are -k and -c on the diagonal.
   const LoadConstants& load = dynamics_.model().load();
-  port.point = paperToWorld(ends.target_position);
-  port.velocity = paperToWorld(ends.target_velocity);
-  port.force = paperToWorld(Eigen::Vector3d(-out.chain.coupling_force));
-  port.moment = -paperToWorld(dynamics_.data().tip_clamp_torque);
+  port.point = ends.target_position;
+  port.velocity = ends.target_velocity;
+  port.force = -out.chain.coupling_force;
+  port.moment = -dynamics_.data().tip_clamp_torque;
   port.stiffness.topLeftCorner<3, 3>() = -load.coupling_stiffness * Eigen::Matrix3d::Identity();
   port.damping.topLeftCorner<3, 3>() = -load.coupling_damping * Eigen::Matrix3d::Identity();
 }

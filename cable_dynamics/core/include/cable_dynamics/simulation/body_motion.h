@@ -23,13 +23,15 @@ void attitudeAt(const MotionParams& motion, double t, Eigen::Matrix3d& rotation,
 void bodyPointAt(const MotionParams& motion, const Eigen::Vector3d& offset, double t, Eigen::Vector3d& position,
                  Eigen::Vector3d& velocity, Eigen::Vector3d& acceleration);
 
-/// A force [N] applied at the point `offset` (body frame [m]) of a body with attitude `attitude`
-/// (world from body), as a wrench about the body's origin: in world axes and in body axes.
+/// A force [N] applied at the point `offset` (body frame [m]) of a body with attitude `attitude` (a
+/// frame's rotation from the body's axes), as a wrench about the body's origin: in that frame's axes and
+/// in body axes.
 struct BodyWrench {
-  Eigen::Vector3d force_world = Eigen::Vector3d::Zero(), moment_world = Eigen::Vector3d::Zero();  ///< [N], [N m]
-  Eigen::Vector3d force_body = Eigen::Vector3d::Zero(), moment_body = Eigen::Vector3d::Zero();    ///< [N], [N m]
+  /// In the frame the attitude maps the body's axes into (the paper frame in a SimulationSnapshot) [N], [N m].
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_body = Eigen::Vector3d::Zero(), moment_body = Eigen::Vector3d::Zero();  ///< body axes [N], [N m]
 };
-BodyWrench wrenchAboutOrigin(const Eigen::Vector3d& force_world, const Eigen::Quaterniond& attitude,
+BodyWrench wrenchAboutOrigin(const Eigen::Vector3d& force, const Eigen::Quaterniond& attitude,
                              const Eigen::Vector3d& offset);
 
 }  // namespace cable_dynamics

@@ -24,7 +24,9 @@ namespace cable_dynamics {
 
 /// The ROV's side of an attached load's coupling, for an ROV simulator that couples implicitly
 /// (docs/ROV_COUPLING.md): the wrench the cable puts on the ROV at the attachment point and its
-/// derivatives, all in world axes (z up). Between two messages the ROV applies
+/// derivatives, all in the axes of one frame: the paper frame in a SimulationSnapshot (z down, from the
+/// base's rest position), the world frame (z up) in the node's message (paperToWorld, paperToWorldMap).
+/// Between two messages the ROV applies
 ///   [F; M](x, v) = [force; moment] + stiffness [x - point; rotation] + damping [v - velocity; omega]
 /// with x, v the attachment point's position and velocity and rotation, omega the ROV's small rotation
 /// and angular velocity since. Zero unless load.mode is attached.
@@ -41,7 +43,10 @@ struct CouplingPort {
   Eigen::Matrix<double, 6, 6> damping = Eigen::Matrix<double, 6, 6>::Zero();
 };
 
-/// Everything published about one instant, in the paper frame (z down) unless stated.
+/// Everything published about one instant, all of it in one frame: the paper frame (z down, origin at the
+/// base's rest position), which the dynamics compute in; quantities in a body's own axes say so. Adapters
+/// that publish in the world frame (REP-103, z up) convert at their boundary with frames.h
+/// (paperToWorld, paperToWorldAttitude, paperToWorldMap): the node does, cable_sim's CSV does not.
 struct SimulationSnapshot {
   double time = 0.0;       ///< simulated time since reset [s]
   Eigen::VectorXd q;       ///< (3n) paper coordinates [rad]
@@ -66,20 +71,21 @@ struct SimulationSnapshot {
   double deployed_length = 0.0;  ///< [m]
   double winch_speed = 0.0;      ///< + paying out [m/s]
   double line_pull = 0.0;        ///< tension at the winch, the base link's base end [N]
-  // The ends as bodies (world frame, z up; body axes as the attitudes give them).
-  Eigen::Quaterniond vessel_attitude = Eigen::Quaterniond::Identity();  ///< world from vessel
-  Eigen::Quaterniond rov_attitude = Eigen::Quaterniond::Identity();     ///< world from ROV
-  /// The vessel's and the ROV's origins (world axes, from the base's rest position) [m]: the hang-off
-  /// point less the hang-off offset; the ROV's target (the tip, when free) less the attachment offset.
+  // The ends as bodies (paper frame; body axes as the attitudes give them).
+  Eigen::Quaterniond vessel_attitude = Eigen::Quaterniond::Identity();  ///< paper frame from vessel axes
+  Eigen::Quaterniond rov_attitude = Eigen::Quaterniond::Identity();     ///< paper frame from ROV axes
+  /// The vessel's and the ROV's origins [m]: the hang-off point less the hang-off offset; the ROV's target
+  /// (the tip, when free) less the attachment offset.
   Eigen::Vector3d vessel_origin = Eigen::Vector3d::Zero(), rov_origin = Eigen::Vector3d::Zero();
-  /// The cable's force on the vessel at the hang-off point, about the vessel's origin [N], [N m].
+  /// The cable's force on the vessel at the hang-off point, about the vessel's origin, in paper and in
+  /// vessel axes [N], [N m].
   BodyWrench vessel;
   /// The cable's force on the ROV at the attachment point (the coupling's reaction when attached; the
-  /// load's force otherwise), about the ROV's origin [N], [N m].
+  /// load's force otherwise), about the ROV's origin, in paper and in ROV axes [N], [N m].
   BodyWrench rov;
-  /// The coupling's port at the attachment point, with its stiffness and damping (attached mode).
+  /// The coupling's port at the attachment point, with its stiffness and damping (attached mode), paper axes.
   CouplingPort port;
-  /// The ROV body (load.mode body; zero otherwise): its origin's velocity (world axes) [m/s], its angular
+  /// The ROV body (load.mode body; zero otherwise): its origin's velocity (paper axes) [m/s], its angular
   /// velocity (body frame) [rad/s], the thrust it applies at its origin (body frame; commanded plus station
   /// keeping) [N, N m], and its kinetic and potential energy (in chain's energies too) [J].
   Eigen::Vector3d rov_velocity = Eigen::Vector3d::Zero();
