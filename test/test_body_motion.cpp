@@ -133,6 +133,10 @@ TEST(BodyMotion, TheSnapshotsBodiesAreInThePaperFrameWithTheCable) {
   std::cout << "bodies on the cable's ends: " << worst_point << " m apart, forces off by " << worst_force << std::endl;
   EXPECT_LT(worst_point, 5e-15);
   EXPECT_EQ(worst_force, 0.0);
+  // The node turns an attitude back to the world frame: the same quaternion as the input, sign included
+  // (a sign flip is the same rotation, but a client comparing components sees it).
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.3, -0.2, 0.9).normalized()));
+  EXPECT_EQ((paperToWorldAttitude(worldToPaperAttitude(q)).coeffs() - q.coeffs()).norm(), 0.0);
 }
 
 TEST(BodyMotion, TheAttachmentPutsAMomentOnTheRov) {

@@ -83,6 +83,15 @@ void CableSimulator::reset() {
   }
 }
 
+namespace {
+/// The world frame's rotation from the ROV body's axes, from the paper frame's `paper_from_body`: the half
+/// turn about x (frames.h) after it.
+Eigen::Quaterniond bodyPoseAttitude(const Eigen::Matrix3d& paper_from_body) {
+  const Eigen::Matrix3d world_from_body = Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal() * paper_from_body;
+  return Eigen::Quaterniond(world_from_body).normalized();
+}
+}  // namespace
+
 BodyPose CableSimulator::bodyPose() {
   BodyPose pose;
   if (!hasBody()) return pose;
@@ -90,9 +99,7 @@ BodyPose CableSimulator::bodyPose() {
   const ChainData& data = dynamics_.data();
   const RovBodyTerms& body = data.body;
   pose.position = paperToWorld(rovBodyOrigin(dynamics_.model().body(), body.rotation, data.tip_position));
-  // The world frame's rotation from the body: the half turn about x (frames.h) after the paper frame's.
-  const Eigen::Matrix3d world_from_body = Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal() * body.rotation;
-  pose.attitude = Eigen::Quaterniond(world_from_body).normalized();
+  pose.attitude = bodyPoseAttitude(body.rotation);
   pose.velocity = paperToWorld(body.rotation * body.velocity.head<3>());
   pose.angular_velocity = body.omega;
   return pose;
@@ -465,7 +472,9 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   out.rov_thrust = applied_thrust_;
   if (hasBody()) {  // from the evaluation above: the body's terms at x
     const RovBodyTerms& body = dynamics_.data().body;
-    out.rov_attitude = Eigen::Quaterniond(body.rotation).normalized();
+    // Through the world frame's quaternion, so that the node's paperToWorldAttitude publishes it as it was
+    // (the same sign: a quaternion from a rotation matrix has either).
+    out.rov_attitude = worldToPaperAttitude(bodyPoseAttitude(body.rotation));
     out.rov_velocity = body.rotation * body.velocity.head<3>();
     out.rov_angular_velocity = body.omega;
   }

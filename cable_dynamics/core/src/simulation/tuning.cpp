@@ -39,7 +39,7 @@ void CableSimulator::retune(const CableParams& tuned) {
   ChainDeployment deployed = dynamics_.deployed();  // the running deployment, with the new constants
   model.redeploy(deployed);
   checkSimulatorInputs(next, deployed.properties(), use_);  // the gate; the coupling's rate enters RK4's limit
-  dynamics_.replaceModel(model);
+  dynamics_.replaceModel(model, deployed);  // the deployment checked above: redeployed once
   params_ = next;
   // A scheme that kept an evaluation of the old model (the last step's end) must evaluate afresh.
   scheme_->forget();

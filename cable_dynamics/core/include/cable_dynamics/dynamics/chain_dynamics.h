@@ -76,11 +76,11 @@ class ChainDynamics {
   }
   /// Drops any hold (a new state).
   void releaseJoints() { data_.deployed.releaseJoints(); }
-  /// Replaces the constants by `model` (the same cable: same n; live tuning of its coefficients) and
-  /// rebuilds the deployment's constants from it (same first slot, winch link and holds). The workspace
-  /// keeps its sizes; between evaluations only. Throws std::invalid_argument for another n.
-  void replaceModel(const ChainModel& model) {
-    model.redeploy(data_.deployed);
+  /// Replaces the constants by `model` (the same cable: same n; live tuning of its coefficients) and the
+  /// deployment by `deployed`, the running one that `model.redeploy` has rebuilt (same first slot, winch
+  /// link and holds; the caller checks it before). The workspace keeps its sizes; between evaluations only.
+  void replaceModel(const ChainModel& model, const ChainDeployment& deployed) {
+    data_.deployed = deployed;
     model_ = model;
   }
   /// What the ends set in the data before any pass: the winch's link length and its held joints' moments

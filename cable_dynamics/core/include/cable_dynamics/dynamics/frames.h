@@ -22,9 +22,10 @@ inline Eigen::Quaterniond paperToWorldAttitude(const Eigen::Quaterniond& paper_f
   return Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0) * paper_from_body;
 }
 
-/// An attitude from the world frame to the paper frame (the same half turn: it is its own inverse).
+/// An attitude from the world frame to the paper frame: the inverse half turn, so that the round trip
+/// gives back the same quaternion, sign included (the products with 0 and +-1 are exact).
 inline Eigen::Quaterniond worldToPaperAttitude(const Eigen::Quaterniond& world_from_body) {
-  return Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0) * world_from_body;
+  return Eigen::Quaterniond(0.0, -1.0, 0.0, 0.0) * world_from_body;
 }
 
 /// A 6x6 map from a motion [linear; angular] to a wrench [force; moment] (a stiffness or a damping), from
