@@ -41,18 +41,6 @@ Vector6 wrenchAtPoint(CableSimulator& sim, const Eigen::Vector3d& point, const E
   return w;
 }
 
-/// The snapshot's port (paper frame) in world axes, as the node's message gives it (base at the origin).
-CouplingPort worldPort(const CouplingPort& paper) {
-  CouplingPort world;
-  world.point = paperToWorld(paper.point);
-  world.velocity = paperToWorld(paper.velocity);
-  world.force = paperToWorld(paper.force);
-  world.moment = paperToWorld(paper.moment);
-  world.stiffness = paperToWorldMap(paper.stiffness);
-  world.damping = paperToWorldMap(paper.damping);
-  return world;
-}
-
 }  // namespace
 
 TEST(CouplingPort, StiffnessAndDampingAreTheWrenchsDerivatives) {
@@ -67,7 +55,7 @@ TEST(CouplingPort, StiffnessAndDampingAreTheWrenchsDerivatives) {
   const Eigen::Quaterniond attitude(Eigen::AngleAxisd(0.3, Eigen::Vector3d(0.2, 0.5, 1.0).normalized()));
   const Vector6 w0 = wrenchAtPoint(sim, point, velocity, attitude, params.load.attachment);
   sim.snapshot(s);
-  const CouplingPort port = worldPort(s.port);
+  const CouplingPort port = portInWorldAxes(s.port);
   EXPECT_LT((port.point - point).norm(), 1e-12);
   EXPECT_LT((port.velocity - velocity).norm(), 1e-12);
   EXPECT_LT(((Vector6() << port.force, port.moment).finished() - w0).norm(), 1e-9 * w0.norm());
@@ -108,12 +96,12 @@ TEST(CouplingPort, ATargetMovesOnWithItsVelocityUntilTheHoldEnds) {
   for (int i = 0; i < 100; ++i) sim.step();  // 0.1 s
   sim.snapshot(s);
   // p + v (t - t0): exact up to the sum of 100 steps of dt in the time (1e-15 s).
-  EXPECT_LT((worldPort(s.port).point - (point + sim.time() * velocity)).norm(), 1e-12);
-  EXPECT_LT((worldPort(s.port).velocity - velocity).norm(), 1e-15);
+  EXPECT_LT((portInWorldAxes(s.port).point - (point + sim.time() * velocity)).norm(), 1e-12);
+  EXPECT_LT((portInWorldAxes(s.port).velocity - velocity).norm(), 1e-15);
   // Past the hold's limit the point stops where the limit left it.
   for (int i = 0; i < 300; ++i) sim.step();  // t = 0.4 s > 0.25 s
   sim.snapshot(s);
-  EXPECT_LT((worldPort(s.port).point - (point + EndConditions::kTargetExtrapolation * velocity)).norm(), 1e-12);
+  EXPECT_LT((portInWorldAxes(s.port).point - (point + EndConditions::kTargetExtrapolation * velocity)).norm(), 1e-12);
   EXPECT_EQ(s.port.velocity.norm(), 0.0);
 }
 

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "cable_dynamics/dynamics/frames.h"
-
 namespace cable_dynamics {
 
 namespace {
@@ -17,19 +15,18 @@ void setXyz(const Eigen::Vector3d& v, Message& m) {
 
 }  // namespace
 
-void fillCouplingPort(const CouplingPort& port, const Eigen::Vector3d& base_position, const ros::Time& stamp,
+void fillCouplingPort(const CouplingPort& paper, const Eigen::Vector3d& base_position, const ros::Time& stamp,
                       cable_msgs::CouplingPort& msg) {
   msg.header.stamp = stamp;
-  // From the snapshot's paper frame to the world frame.
-  setXyz(paperToWorld(port.point) + base_position, msg.point);
-  setXyz(paperToWorld(port.velocity), msg.velocity);
-  setXyz(paperToWorld(port.force), msg.wrench.force);
-  setXyz(paperToWorld(port.moment), msg.wrench.torque);
-  const Eigen::Matrix<double, 6, 6> stiffness = paperToWorldMap(port.stiffness), damping = paperToWorldMap(port.damping);
+  const CouplingPort port = portInWorldAxes(paper);  // the snapshot's paper frame to the world frame
+  setXyz(port.point + base_position, msg.point);
+  setXyz(port.velocity, msg.velocity);
+  setXyz(port.force, msg.wrench.force);
+  setXyz(port.moment, msg.wrench.torque);
   for (int r = 0; r < 6; ++r) {
     for (int c = 0; c < 6; ++c) {
-      msg.stiffness[6 * r + c] = stiffness(r, c);
-      msg.damping[6 * r + c] = damping(r, c);
+      msg.stiffness[6 * r + c] = port.stiffness(r, c);
+      msg.damping[6 * r + c] = port.damping(r, c);
     }
   }
 }

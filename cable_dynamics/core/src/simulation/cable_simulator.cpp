@@ -496,6 +496,17 @@ void CableSimulator::snapshot(SimulationSnapshot& out) {
   couplingPort(ends, out);
 }
 
+CouplingPort portInWorldAxes(const CouplingPort& paper) {
+  CouplingPort world;
+  world.point = paperToWorld(paper.point);
+  world.velocity = paperToWorld(paper.velocity);
+  world.force = paperToWorld(paper.force);
+  world.moment = paperToWorld(paper.moment);
+  world.stiffness = paperToWorldMap(paper.stiffness);
+  world.damping = paperToWorldMap(paper.damping);
+  return world;
+}
+
 void CableSimulator::couplingPort(const EndInputs& ends, SimulationSnapshot& out) const {
   CouplingPort& port = out.port;
   port = CouplingPort();

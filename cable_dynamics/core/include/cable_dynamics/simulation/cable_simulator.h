@@ -43,6 +43,10 @@ struct CouplingPort {
   Eigen::Matrix<double, 6, 6> damping = Eigen::Matrix<double, 6, 6>::Zero();
 };
 
+/// A port in paper axes (a snapshot's) in world axes, the point still from the base's rest position: what
+/// the node publishes (frames.h paperToWorld, paperToWorldMap).
+CouplingPort portInWorldAxes(const CouplingPort& paper);
+
 /// Everything published about one instant, all of it in one frame: the paper frame (z down, origin at the
 /// base's rest position), which the dynamics compute in; quantities in a body's own axes say so. Adapters
 /// that publish in the world frame (REP-103, z up) convert at their boundary with frames.h

@@ -11,9 +11,9 @@
 
 namespace cable_dynamics {
 
-/// Fills `msg` from the snapshot's port: the point in the world frame (the base's rest position at
+/// Fills `msg` from the snapshot's port (paper axes; portInWorldAxes turns it): the point in the world frame (the base's rest position at
 /// `base_position` [m]), the wrench and its 6x6 stiffness and damping row-major. No allocation (fixed arrays).
-void fillCouplingPort(const CouplingPort& port, const Eigen::Vector3d& base_position, const ros::Time& stamp,
+void fillCouplingPort(const CouplingPort& paper, const Eigen::Vector3d& base_position, const ros::Time& stamp,
                       cable_msgs::CouplingPort& msg);
 
 /// Every number of the message finite.
