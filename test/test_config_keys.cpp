@@ -108,6 +108,28 @@ TEST(ConfigKeys, TheLoaderAndDocsConfigNameTheSameKeys) {
   for (const std::string& k : docs) EXPECT_EQ(loader.count(k), 1u) << "docs/CONFIG.md names " << k << ", the loader does not read it";
 }
 
+// One range per key: every key the loader reads with a range, the gate (checkConfigRanges, which the
+// loader runs at its end and the simulator on parameters filled in by hand) checks too; and the gate
+// names only keys a config has. The loader reads the same keys as above and the log records both.
+TEST(ConfigKeys, TheGateChecksEveryKeyTheLoaderReadsWithARange) {
+  std::set<std::string> ranged, checked, asked;
+  {
+    ConfigKeyLog log;
+    for (const char* config : {kWinchConfig, kAttachmentConfig, kBodyConfig}) loadConfigString(config);
+    for (const std::string& k : log.rangedKeys()) ranged.insert(normalized(k));
+    for (const std::string& k : log.checkedKeys()) checked.insert(normalized(k));
+    for (const std::string& k : log.keys()) asked.insert(normalized(k));
+  }
+  // Not kept in CableParams: the loader turns a material density into the mass per length, which the
+  // gate checks.
+  const std::set<std::string> not_kept = {"cable.material_density", "cable.sections[i].material_density"};
+  ASSERT_GE(ranged.size(), 100u) << "the configs above no longer reach the loader's ranged keys";
+  for (const std::string& k : ranged) {
+    EXPECT_TRUE(checked.count(k) == 1 || not_kept.count(k) == 1) << "the loader reads " << k << " with a range, the gate does not check it";
+  }
+  for (const std::string& k : checked) EXPECT_EQ(asked.count(k), 1u) << "the gate checks " << k << ", which no config names";
+}
+
 // The hook itself: it records what a parse asks for and nothing once it is gone.
 TEST(ConfigKeys, TheLogRecordsWhileItExists) {
   {

@@ -10,6 +10,10 @@ catkin_add_gtest(test_config_keys test/test_config_keys.cpp)
 target_link_libraries(test_config_keys cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 target_compile_definitions(test_config_keys PRIVATE CABLE_DOCS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/docs")
 
+# Parameters filled in by hand meet the config's ranges (params/key_ranges.h) in the simulator's gate.
+catkin_add_gtest(test_range_gate test/test_range_gate.cpp)
+target_link_libraries(test_range_gate cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
 catkin_add_gtest(test_paper_model test/test_paper_model.cpp)
 target_link_libraries(test_paper_model cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 

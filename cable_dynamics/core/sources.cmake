@@ -4,9 +4,11 @@
 set(CABLE_CORE_DIR ${CMAKE_CURRENT_LIST_DIR})
 set(CABLE_CORE_INCLUDE_DIR ${CABLE_CORE_DIR}/include)
 set(CABLE_CORE_SOURCES
-  # params: parameters, the config loader, the input gate, initial states
+  # params: parameters, each key's range, the config loader, the input gate, initial states
   ${CABLE_CORE_DIR}/src/params/cable_params.cpp
+  ${CABLE_CORE_DIR}/src/params/key_ranges.cpp
   ${CABLE_CORE_DIR}/src/params/config_section.cpp
+  ${CABLE_CORE_DIR}/src/params/range_gate.cpp
   ${CABLE_CORE_DIR}/src/params/config_loader.cpp
   ${CABLE_CORE_DIR}/src/params/input_gate.cpp
   ${CABLE_CORE_DIR}/src/params/seabed_config.cpp

@@ -10,6 +10,10 @@ double CableParams::totalLength() const {
   return std::accumulate(link_lengths.begin(), link_lengths.end(), 0.0);
 }
 
+int drumSlotsFor(const WinchParams& w, double deployed) {
+  return static_cast<int>(std::ceil((w.max_length - deployed) / w.link_length - 1e-9)) + 1;
+}
+
 double CableParams::deployedLength() const {
   return std::accumulate(link_lengths.begin() + drumSlots(), link_lengths.end(), 0.0);
 }

@@ -15,8 +15,6 @@ namespace {
 
 using Section = ConfigSection;
 
-constexpr int kMaxLinks = 10000;
-
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// What parseCable leaves for later: the sections' defaults need the fluid's coefficients.
@@ -27,16 +25,16 @@ struct CableRest {
 };
 
 void parseCable(Section cable, CableParams& p, CableRest& rest) {
-  p.links = cable.integer("links", 1, 1, kMaxLinks, true);
+  p.links = cable.integer("links", 1, ranges::kLinks, true);
   if (cable.has("link_lengths")) {
     // The list overrides `length`: the total length is then the sum of the list.
-    p.link_lengths = cable.numberList("link_lengths", p.links, 0.0, 1e5, true, "m");
-    cable.number("length", 0.0, 0.0, 1e5, true, "m");  // still validated when present
+    p.link_lengths = cable.numberList("link_lengths", p.links, ranges::kLength);
+    cable.number("length", 0.0, ranges::kLength);  // still validated when present
   } else {
-    const double total = cable.number("length", 0.0, 0.0, 1e5, true, "m", true);
+    const double total = cable.number("length", 0.0, ranges::kLength, true);
     p.link_lengths.assign(p.links, total / p.links);
   }
-  p.diameter = cable.number("diameter", 0.0, 0.0, 10.0, true, "m", true);
+  p.diameter = cable.number("diameter", 0.0, ranges::kDiameter, true);
   const bool has_linear_density = cable.has("mass_per_length");
   const bool has_material_density = cable.has("material_density");
   if (has_linear_density == has_material_density) {
@@ -44,23 +42,23 @@ void parseCable(Section cable, CableParams& p, CableRest& rest) {
                       "exactly one of cable.mass_per_length [kg/m] or cable.material_density [kg/m^3]");
   }
   if (has_linear_density) {
-    p.mass_per_length = cable.number("mass_per_length", 0.0, 0.0, 1e5, true, "kg/m");
+    p.mass_per_length = cable.number("mass_per_length", 0.0, ranges::kMassPerLength);
   } else {
-    const double rho = cable.number("material_density", 0.0, 0.0, 1e5, true, "kg/m^3");
+    const double rho = cable.number("material_density", 0.0, ranges::kMaterialDensity);
     p.mass_per_length = rho * M_PI * 0.25 * p.diameter * p.diameter;
     rest.material_density = rho;
   }
-  p.axial_stiffness = cable.number("axial_stiffness", 0.0, 0.0, 1e13, false, "N");
-  p.axial_damping = cable.number("axial_damping", 0.0, 0.0, 1e13, false, "N s");
+  p.axial_stiffness = cable.number("axial_stiffness", 0.0, ranges::kAxialStiffness);
+  p.axial_damping = cable.number("axial_damping", 0.0, ranges::kAxialDamping);
   {
     // Each limit, when given, must be positive (the clearance may be 0); absent: no limit.
     Section limits = cable.sub("limits");
     LimitParams& l = p.limits;
-    if (limits.has("max_tension")) l.max_tension = limits.number("max_tension", 0.0, 0.0, 1e12, true, "N");
-    if (limits.has("min_bend_radius")) l.min_bend_radius = limits.number("min_bend_radius", 0.0, 0.0, 1e5, true, "m");
+    if (limits.has("max_tension")) l.max_tension = limits.number("max_tension", 0.0, ranges::kMaxTension);
+    if (limits.has("min_bend_radius")) l.min_bend_radius = limits.number("min_bend_radius", 0.0, ranges::kBendRadius);
     l.has_min_seabed_clearance = limits.has("min_seabed_clearance");
     if (l.has_min_seabed_clearance) {
-      l.min_seabed_clearance = limits.number("min_seabed_clearance", 0.0, 0.0, 1e5, false, "m");
+      l.min_seabed_clearance = limits.number("min_seabed_clearance", 0.0, ranges::kSeabedClearance);
     }
     limits.rejectUnknownKeys();
   }
@@ -72,36 +70,36 @@ void parseCable(Section cable, CableParams& p, CableRest& rest) {
   Section stiffness = cable.sub("stiffness");
   const std::string model = stiffness.choice("model", "paper", {"paper", "bending"});
   p.stiffness.model = model == "paper" ? StiffnessModel::kPaper : StiffnessModel::kBending;
-  p.stiffness.elevation = stiffness.number("elevation", 0.0, 0.0, kInf, false, "N m/rad");
-  p.stiffness.azimuth = stiffness.number("azimuth", 0.0, 0.0, kInf, false, "N m/rad");
-  p.stiffness.torsion = stiffness.number("torsion", 0.0, 0.0, kInf, false, "N m/rad");
-  p.stiffness.bending_rigidity = stiffness.number("bending_rigidity", 0.0, 0.0, kInf, false, "N m^2");
-  p.stiffness.torsional_rigidity = stiffness.number("torsional_rigidity", 0.0, 0.0, kInf, false, "N m^2");
+  p.stiffness.elevation = stiffness.number("elevation", 0.0, ranges::kJointStiffness);
+  p.stiffness.azimuth = stiffness.number("azimuth", 0.0, ranges::kJointStiffness);
+  p.stiffness.torsion = stiffness.number("torsion", 0.0, ranges::kJointStiffness);
+  p.stiffness.bending_rigidity = stiffness.number("bending_rigidity", 0.0, ranges::kRigidity);
+  p.stiffness.torsional_rigidity = stiffness.number("torsional_rigidity", 0.0, ranges::kRigidity);
   stiffness.rejectUnknownKeys();
 
   Section damping = cable.sub("damping");
-  p.damping.elevation = damping.number("elevation", 0.0, 0.0, kInf, false, "N m s/rad");
-  p.damping.azimuth = damping.number("azimuth", 0.0, 0.0, kInf, false, "N m s/rad");
-  p.damping.torsion = damping.number("torsion", 0.0, 0.0, kInf, false, "N m s/rad");
+  p.damping.elevation = damping.number("elevation", 0.0, ranges::kJointDamping);
+  p.damping.azimuth = damping.number("azimuth", 0.0, ranges::kJointDamping);
+  p.damping.torsion = damping.number("torsion", 0.0, ranges::kJointDamping);
   damping.rejectUnknownKeys();
   cable.rejectUnknownKeys();
 }
 
-Eigen::Vector3d vector3(Section& s, const std::string& key, double limit, const char* unit) {
+Eigen::Vector3d vector3(Section& s, const std::string& key, const NumberRange& range) {
   if (!s.has(key)) return Eigen::Vector3d::Zero();
-  const std::vector<double> v = s.numberList(key, 3, -limit, limit, false, unit);
+  const std::vector<double> v = s.numberList(key, 3, range);
   return Eigen::Vector3d(v[0], v[1], v[2]);
 }
 
 MotionParams parseMotion(Section motion) {
   MotionParams m;
-  m.offset = vector3(motion, "offset", 1e5, "m");
-  m.amplitude = vector3(motion, "amplitude", 1e4, "m");
-  m.period = motion.number("period", 10.0, 0.0, 1e6, true, "s");
-  m.phase = motion.number("phase", 0.0, -2.0 * M_PI, 2.0 * M_PI, false, "rad");
-  m.velocity = vector3(motion, "velocity", 100.0, "m/s");
-  m.attitude_amplitude = vector3(motion, "attitude_amplitude", M_PI, "rad");
-  m.attitude_phase = vector3(motion, "attitude_phase", 2.0 * M_PI, "rad");
+  m.offset = vector3(motion, "offset", ranges::kMotionOffset);
+  m.amplitude = vector3(motion, "amplitude", ranges::kMotionAmplitude);
+  m.period = motion.number("period", 10.0, ranges::kMotionPeriod);
+  m.phase = motion.number("phase", 0.0, ranges::kPhase);
+  m.velocity = vector3(motion, "velocity", ranges::kMotionVelocity);
+  m.attitude_amplitude = vector3(motion, "attitude_amplitude", ranges::kAttitudeAngle);
+  m.attitude_phase = vector3(motion, "attitude_phase", ranges::kPhase);
   motion.rejectUnknownKeys();
   return m;
 }
@@ -109,12 +107,12 @@ MotionParams parseMotion(Section motion) {
 /// A square matrix given whole (size^2 numbers, row by row) or by its diagonal (size numbers); `fallback`
 /// when absent.
 template <int Size>
-Eigen::Matrix<double, Size, Size> squareMatrix(Section& s, const std::string& key, double limit, const char* unit,
+Eigen::Matrix<double, Size, Size> squareMatrix(Section& s, const std::string& key, const NumberRange& range,
                                                const Eigen::Matrix<double, Size, Size>& fallback) {
   if (!s.has(key)) return fallback;
   Eigen::Matrix<double, Size, Size> m = Eigen::Matrix<double, Size, Size>::Zero();
   const bool whole = s.raw(key).IsSequence() && s.raw(key).size() == static_cast<std::size_t>(Size * Size);
-  const std::vector<double> v = s.numberList(key, whole ? Size * Size : Size, -limit, limit, false, unit);
+  const std::vector<double> v = s.numberList(key, whole ? Size * Size : Size, range);
   for (int r = 0; r < Size; ++r) {
     if (!whole) m(r, r) = v[r];
     for (int c = 0; whole && c < Size; ++c) m(r, c) = v[Size * r + c];
@@ -126,49 +124,49 @@ Eigen::Matrix<double, Size, Size> squareMatrix(Section& s, const std::string& ke
 /// Symmetry and definiteness are the gate's (input_gate.cpp), which names the key.
 RovBodyParams parseRovBody(Section body) {
   RovBodyParams b;
-  b.inertia = squareMatrix<3>(body, "inertia", 1e9, "kg m^2", b.inertia);
-  b.added_mass = squareMatrix<6>(body, "added_mass", 1e9, "kg, kg m, kg m^2", b.added_mass);
-  const auto six = [&body](const char* key, double lo, const char* unit) {
+  b.inertia = squareMatrix<3>(body, "inertia", ranges::kInertia, b.inertia);
+  b.added_mass = squareMatrix<6>(body, "added_mass", ranges::kBodyAddedMass, b.added_mass);
+  const auto six = [&body](const char* key, const NumberRange& range) {
     Eigen::Matrix<double, 6, 1> v = Eigen::Matrix<double, 6, 1>::Zero();
     if (!body.has(key)) return v;
-    const std::vector<double> list = body.numberList(key, 6, lo, 1e9, false, unit);
+    const std::vector<double> list = body.numberList(key, 6, range);
     for (int i = 0; i < 6; ++i) v(i) = list[i];
     return v;
   };
-  b.linear_damping = six("linear_damping", 0.0, "N s/m, N m s/rad");
-  b.quadratic_damping = six("quadratic_damping", 0.0, "N s^2/m^2, N m s^2/rad^2");
-  b.center_of_gravity = vector3(body, "center_of_gravity", 100.0, "m");
-  b.center_of_buoyancy = vector3(body, "center_of_buoyancy", 100.0, "m");
-  b.initial_attitude = vector3(body, "initial_attitude", M_PI, "rad");
+  b.linear_damping = six("linear_damping", ranges::kLinearDamping);
+  b.quadratic_damping = six("quadratic_damping", ranges::kQuadraticDamping);
+  b.center_of_gravity = vector3(body, "center_of_gravity", ranges::kBodyCentre);
+  b.center_of_buoyancy = vector3(body, "center_of_buoyancy", ranges::kBodyCentre);
+  b.initial_attitude = vector3(body, "initial_attitude", ranges::kAttitudeAngle);
   Section keeper = body.sub("station_keeping");
-  const auto gains = [&keeper](const char* key, const char* unit) {
+  const auto gains = [&keeper](const char* key, const NumberRange& range) {
     if (!keeper.has(key)) return Eigen::Vector3d::Zero().eval();
-    const std::vector<double> v = keeper.numberList(key, 3, 0.0, 1e9, false, unit);
+    const std::vector<double> v = keeper.numberList(key, 3, range);
     return Eigen::Vector3d(v[0], v[1], v[2]);
   };
-  b.position_gain = gains("position_gain", "N/m");
-  b.velocity_gain = gains("velocity_gain", "N s/m");
-  b.integral_gain = gains("integral_gain", "N/(m s)");
-  b.attitude_gain = gains("attitude_gain", "N m/rad");
-  b.rate_gain = gains("rate_gain", "N m s/rad");
-  b.max_force = keeper.number("max_force", 1e300, 0.0, 1e300, false, "N");
-  b.max_torque = keeper.number("max_torque", 1e300, 0.0, 1e300, false, "N m");
+  b.position_gain = gains("position_gain", ranges::kPositionGain);
+  b.velocity_gain = gains("velocity_gain", ranges::kVelocityGain);
+  b.integral_gain = gains("integral_gain", ranges::kIntegralGain);
+  b.attitude_gain = gains("attitude_gain", ranges::kAttitudeGain);
+  b.rate_gain = gains("rate_gain", ranges::kRateGain);
+  b.max_force = keeper.number("max_force", 1e300, ranges::kMaxForce);
+  b.max_torque = keeper.number("max_torque", 1e300, ranges::kMaxTorque);
   keeper.rejectUnknownKeys();
   body.rejectUnknownKeys();
   return b;
 }
 
 void parseLoad(Section load, CableParams& p) {
-  p.load.mass = load.number("mass", 0.0, 0.0, 1e7, false, "kg");
-  p.load.volume = load.number("volume", 0.0, 0.0, 1e4, false, "m^3");
+  p.load.mass = load.number("mass", 0.0, ranges::kMass);
+  p.load.volume = load.number("volume", 0.0, ranges::kVolume);
   const std::string mode = load.choice("mode", "free", {"free", "anchored", "attached", "body"});
   p.load.mode = mode == "free"       ? LoadMode::kFree
                 : mode == "anchored" ? LoadMode::kAnchored
                 : mode == "attached" ? LoadMode::kAttached
                                      : LoadMode::kBody;
   if (load.has("body")) p.load.body = parseRovBody(load.sub("body"));
-  p.load.drag_area = load.number("drag_area", 0.0, 0.0, 1e4, false, "m^2");
-  p.load.added_mass = load.number("added_mass", 0.0, 0.0, 1e7, false, "kg");
+  p.load.drag_area = load.number("drag_area", 0.0, ranges::kDragArea);
+  p.load.added_mass = load.number("added_mass", 0.0, ranges::kAddedMass);
   if (load.has("anchor") && p.load.mode != LoadMode::kAnchored) {
     throw ConfigError("load.anchor", describeNode(load.raw("anchor")), "given only with load.mode: anchored");
   }
@@ -180,14 +178,14 @@ void parseLoad(Section load, CableParams& p) {
                       "anchor that gives by the coupling)");
   }
   Section coupling = load.sub("coupling");
-  p.load.coupling_stiffness = coupling.number("stiffness", 2.0e4, 0.0, 1e9, true, "N/m");
-  p.load.coupling_damping = coupling.number("damping", 2.0e3, 0.0, 1e9, false, "N s/m");
+  p.load.coupling_stiffness = coupling.number("stiffness", 2.0e4, ranges::kCouplingStiffness);
+  p.load.coupling_damping = coupling.number("damping", 2.0e3, ranges::kCouplingDamping);
   coupling.rejectUnknownKeys();
   p.load.motion = parseMotion(load.sub("motion"));
-  p.load.attachment = vector3(load, "attachment", 1e3, "m");
+  p.load.attachment = vector3(load, "attachment", ranges::kBodyPoint);
   p.load.fixity = load.choice("fixity", "pinned", {"pinned", "clamped"}) == "pinned" ? TipFixity::kPinned : TipFixity::kClamped;
   if (load.has("direction")) {
-    const std::vector<double> d = load.numberList("direction", 3, -1e3, 1e3, false, "");
+    const std::vector<double> d = load.numberList("direction", 3, ranges::kDirection);
     p.load.direction = Eigen::Vector3d(d[0], d[1], d[2]);
     if (p.load.direction.norm() < 1e-9) {
       throw ConfigError("load.direction", describeNode(load.raw("direction")), "a non-zero vector");
@@ -198,12 +196,12 @@ void parseLoad(Section load, CableParams& p) {
 }
 
 void parseFluid(Section fluid, CableParams& p) {
-  p.fluid.density = fluid.number("density", 1025.0, 0.0, 2.0e4, false, "kg/m^3");
-  p.fluid.drag_normal = fluid.number("drag_normal", 1.2, 0.0, 100.0, false, "");
-  p.fluid.drag_tangential = fluid.number("drag_tangential", 0.01, 0.0, 100.0, false, "");
-  p.fluid.added_mass = fluid.number("added_mass", 1.0, 0.0, 100.0, false, "");
-  p.fluid.current = vector3(fluid, "current", kMaxCurrentSpeed, "m/s");  // the setter's range too
-  p.fluid.drag_points = fluid.integer("drag_points", 3, 1, 8, false);
+  p.fluid.density = fluid.number("density", 1025.0, ranges::kFluidDensity);
+  p.fluid.drag_normal = fluid.number("drag_normal", 1.2, ranges::kCoefficient);
+  p.fluid.drag_tangential = fluid.number("drag_tangential", 0.01, ranges::kCoefficient);
+  p.fluid.added_mass = fluid.number("added_mass", 1.0, ranges::kCoefficient);
+  p.fluid.current = vector3(fluid, "current", ranges::kCurrent);  // the setter's range too
+  p.fluid.drag_points = fluid.integer("drag_points", 3, ranges::kDragPoints);
   if (fluid.has("current_profile")) {
     const YAML::Node rows = fluid.raw("current_profile");
     const std::string key = fluid.path() + ".current_profile";
@@ -215,7 +213,7 @@ void parseFluid(Section fluid, CableParams& p) {
       YAML::Node wrapper;
       wrapper["row"] = rows[i];
       Section row(wrapper, key + "[" + std::to_string(i) + "]");
-      const std::vector<double> v = row.numberList("row", 4, -1e5, 1e5, false, "m, m/s");
+      const std::vector<double> v = row.numberList("row", 4, ranges::kProfileRow);
       if (!(v[0] > previous_depth)) {
         throw ConfigError(key + "[" + std::to_string(i) + "]", describeNode(rows[i]), "depths strictly increasing");
       }
@@ -244,22 +242,22 @@ void parseSections(const YAML::Node& rows, const CableRest& rest, CableParams& p
     const bool last = i + 1 == rows.size();
     SectionParams s;
     // Every length but the last is required; the last, when left out, runs to the cable's tip.
-    s.length = row.number("length", 0.0, 0.0, 1e5, true, "m", !last);
-    s.diameter = row.number("diameter", p.diameter, 0.0, 10.0, true, "m");
+    s.length = row.number("length", 0.0, ranges::kLength, !last);
+    s.diameter = row.number("diameter", p.diameter, ranges::kDiameter);
     const bool linear = row.has("mass_per_length"), material = row.has("material_density");
     if (linear && material) {
       throw ConfigError(row.path() + ".mass_per_length", "given with material_density",
                         "at most one of mass_per_length [kg/m] or material_density [kg/m^3]");
     }
     if (linear) {
-      s.mass_per_length = row.number("mass_per_length", 0.0, 0.0, 1e5, true, "kg/m");
+      s.mass_per_length = row.number("mass_per_length", 0.0, ranges::kMassPerLength);
     } else {
       // Left out: the cable's material density over this diameter, or the cable's mass per length.
-      const double rho = material ? row.number("material_density", 0.0, 0.0, 1e5, true, "kg/m^3") : rest.material_density;
+      const double rho = material ? row.number("material_density", 0.0, ranges::kMaterialDensity) : rest.material_density;
       s.mass_per_length = rho > 0.0 ? rho * M_PI * 0.25 * s.diameter * s.diameter : p.mass_per_length;
     }
-    s.bending_rigidity = row.number("bending_rigidity", k.bending_rigidity, 0.0, kInf, false, "N m^2");
-    s.torsional_rigidity = row.number("torsional_rigidity", k.torsional_rigidity, 0.0, kInf, false, "N m^2");
+    s.bending_rigidity = row.number("bending_rigidity", k.bending_rigidity, ranges::kRigidity);
+    s.torsional_rigidity = row.number("torsional_rigidity", k.torsional_rigidity, ranges::kRigidity);
     if (row.has("bending_rigidity") && s.bending_rigidity > 0.0 && (k.elevation > 0.0 || k.azimuth > 0.0)) {
       throw ConfigError(row.path() + ".bending_rigidity", formatNumber(s.bending_rigidity),
                         "0 when cable.stiffness.elevation or azimuth is given (one or the other)");
@@ -268,14 +266,14 @@ void parseSections(const YAML::Node& rows, const CableRest& rest, CableParams& p
       throw ConfigError(row.path() + ".torsional_rigidity", formatNumber(s.torsional_rigidity),
                         "0 when cable.stiffness.torsion is given (one or the other)");
     }
-    s.axial_stiffness = row.number("axial_stiffness", p.axial_stiffness, 0.0, 1e13, false, "N");
-    s.drag_normal = row.number("drag_normal", p.fluid.drag_normal, 0.0, 100.0, false, "");
-    s.drag_tangential = row.number("drag_tangential", p.fluid.drag_tangential, 0.0, 100.0, false, "");
-    s.added_mass = row.number("added_mass", p.fluid.added_mass, 0.0, 100.0, false, "");
+    s.axial_stiffness = row.number("axial_stiffness", p.axial_stiffness, ranges::kAxialStiffness);
+    s.drag_normal = row.number("drag_normal", p.fluid.drag_normal, ranges::kCoefficient);
+    s.drag_tangential = row.number("drag_tangential", p.fluid.drag_tangential, ranges::kCoefficient);
+    s.added_mass = row.number("added_mass", p.fluid.added_mass, ranges::kCoefficient);
     s.min_bend_radius = p.limits.min_bend_radius;  // the cable's unless the section has its own
     {
       Section limits = row.sub("limits");
-      if (limits.has("min_bend_radius")) s.min_bend_radius = limits.number("min_bend_radius", 0.0, 0.0, 1e5, true, "m");
+      if (limits.has("min_bend_radius")) s.min_bend_radius = limits.number("min_bend_radius", 0.0, ranges::kBendRadius);
       limits.rejectUnknownKeys();
     }
     row.rejectUnknownKeys();
@@ -307,11 +305,11 @@ void parseAttachments(const YAML::Node& rows, CableParams& p) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     Section row(rows[i], key + "[" + std::to_string(i) + "]");
     AttachmentParams a;
-    a.arc_length = row.number("arc_length", 0.0, 0.0, total, false, "m", true);
-    a.mass = row.number("mass", 0.0, 0.0, 1e7, false, "kg");
-    a.volume = row.number("volume", 0.0, 0.0, 1e4, false, "m^3");
-    a.drag_area = row.number("drag_area", 0.0, 0.0, 1e4, false, "m^2");
-    a.added_mass = row.number("added_mass", 0.0, 0.0, 1e7, false, "kg");
+    a.arc_length = row.number("arc_length", 0.0, ranges::arcLength(total), true);
+    a.mass = row.number("mass", 0.0, ranges::kMass);
+    a.volume = row.number("volume", 0.0, ranges::kVolume);
+    a.drag_area = row.number("drag_area", 0.0, ranges::kDragArea);
+    a.added_mass = row.number("added_mass", 0.0, ranges::kAddedMass);
     row.rejectUnknownKeys();
     p.attachments.push_back(a);
   }
@@ -325,11 +323,11 @@ void parseWinch(Section winch, CableParams& p) {
   const double link = p.link_lengths.front();
   w.enabled = true;
   w.link_length = link;
-  w.max_length = winch.number("max_length", 0.0, deployed, 1e5, false, "m", true);
-  w.min_length = winch.number("min_length", link, link, deployed, false, "m");
-  w.max_speed = winch.number("max_speed", 1.0, 0.0, 100.0, true, "m/s");
-  w.max_acceleration = winch.number("max_acceleration", 0.5, 0.0, 1e3, true, "m/s^2");
-  w.speed = winch.number("speed", 0.0, -w.max_speed, w.max_speed, false, "m/s");
+  w.max_length = winch.number("max_length", 0.0, ranges::winchMaxLength(deployed), true);
+  w.min_length = winch.number("min_length", link, ranges::winchMinLength(link, deployed));
+  w.max_speed = winch.number("max_speed", 1.0, ranges::kWinchMaxSpeed);
+  w.max_acceleration = winch.number("max_acceleration", 0.5, ranges::kWinchMaxAcceleration);
+  w.speed = winch.number("speed", 0.0, ranges::winchSpeed(w.max_speed));
   if (winch.has("schedule")) {
     const YAML::Node rows = winch.raw("schedule");
     const std::string key = winch.path() + ".schedule";
@@ -340,7 +338,7 @@ void parseWinch(Section winch, CableParams& p) {
     for (std::size_t i = 0; i < rows.size(); ++i) {
       Section row(rows[i], key + "[" + std::to_string(i) + "]");
       WinchCommand c;
-      c.time = row.number("time", 0.0, 0.0, 1e7, false, "s", true);
+      c.time = row.number("time", 0.0, ranges::kScheduleTime, true);
       if (!(c.time > previous)) throw ConfigError(row.path() + ".time", describeNode(rows[i]["time"]), "times strictly increasing");
       previous = c.time;
       const bool has_speed = row.has("speed"), has_length = row.has("length");
@@ -348,21 +346,14 @@ void parseWinch(Section winch, CableParams& p) {
         throw ConfigError(row.path(), describeNode(rows[i]), "exactly one of speed [m/s] or length [m]");
       }
       c.to_length = has_length;
-      c.value = has_length ? row.number("length", 0.0, w.min_length, w.max_length, false, "m")
-                           : row.number("speed", 0.0, -w.max_speed, w.max_speed, false, "m/s");
+      c.value = has_length ? row.number("length", 0.0, ranges::winchLength(w.min_length, w.max_length))
+                           : row.number("speed", 0.0, ranges::winchSpeed(w.max_speed));
       row.rejectUnknownKeys();
       w.schedule.push_back(c);
     }
   }
   winch.rejectUnknownKeys();
-  // Slots for the longest deployment: one more than the whole links it adds, since the winch's link
-  // is between one and 2.25 links long.
-  const int stored = static_cast<int>(std::ceil((w.max_length - deployed) / link - 1e-9)) + 1;
-  if (p.links + stored > kMaxLinks) {
-    throw ConfigError(winch.path() + ".max_length", formatNumber(w.max_length),
-                      "at most " + std::to_string(kMaxLinks) + " links of " + std::to_string(link) + " m in all");
-  }
-  w.stored_links = stored;
+  w.stored_links = drumSlotsFor(w, deployed);  // at most kLinks in all: the gate's (checkConfigRanges)
 }
 
 }  // namespace
@@ -376,11 +367,11 @@ CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   parseLoad(top.sub("load"), p);
   Section base = top.sub("base");
   p.base.motion = parseMotion(base.sub("motion"));
-  p.base.hang_off = vector3(base, "hang_off", 1e3, "m");
+  p.base.hang_off = vector3(base, "hang_off", ranges::kBodyPoint);
   p.base.fixity = base.choice("fixity", "clamped", {"clamped", "pinned"}) == "clamped" ? BaseFixity::kClamped
                                                                                        : BaseFixity::kPinned;
   if (base.has("direction")) {
-    const std::vector<double> d = base.numberList("direction", 3, -1e3, 1e3, false, "");
+    const std::vector<double> d = base.numberList("direction", 3, ranges::kDirection);
     p.base.direction = Eigen::Vector3d(d[0], d[1], d[2]);
     if (p.base.direction.norm() < 1e-9) {
       throw ConfigError("base.direction", describeNode(base.raw("direction")), "a non-zero vector (world frame)");
@@ -389,7 +380,7 @@ CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   }
   base.rejectUnknownKeys();
   parseFluid(top.sub("fluid"), p);
-  p.gravity = top.number("gravity", 9.81, 0.0, 100.0, false, "m/s^2");
+  p.gravity = top.number("gravity", 9.81, ranges::kGravity);
   if (cable_rest.has_sections) parseSections(cable_rest.sections, cable_rest, p);
   if (top.has("attachments")) parseAttachments(top.raw("attachments"), p);
   if (top.has("seabed")) parseSeabed(top.sub("seabed"), base_dir, p);
@@ -397,19 +388,19 @@ CableParams parseConfig(const YAML::Node& root, const std::string& base_dir) {
   Section initial = top.sub("initial");
   p.initial.mode = initial.choice("mode", "angles", {"angles", "equilibrium"}) == "angles" ? InitialMode::kAngles
                                                                                        : InitialMode::kEquilibrium;
-  p.initial.elevation = initial.perJoint("elevation", p.links, -M_PI, M_PI, "rad");
-  p.initial.azimuth = initial.perJoint("azimuth", p.links, -M_PI, M_PI, "rad");
-  p.initial.torsion = initial.perJoint("torsion", p.links, -1e3, 1e3, "rad");
+  p.initial.elevation = initial.perJoint("elevation", p.links, ranges::kInitialAngle);
+  p.initial.azimuth = initial.perJoint("azimuth", p.links, ranges::kInitialAngle);
+  p.initial.torsion = initial.perJoint("torsion", p.links, ranges::kInitialTorsion);
   initial.rejectUnknownKeys();
 
   Section simulation = top.sub("simulation");
-  p.simulation.dt = simulation.number("dt", 0.001, 0.0, 0.1, true, "s");
+  p.simulation.dt = simulation.number("dt", 0.001, ranges::kDt);
   const std::string integrator = simulation.choice("integrator", "rk4", {"rk4", "semi_implicit", "implicit"});
   p.simulation.integrator = integrator == "rk4"             ? Integrator::kRk4
                             : integrator == "semi_implicit" ? Integrator::kSemiImplicit
                                                             : Integrator::kImplicit;
-  p.simulation.rho_infinity = simulation.number("rho_infinity", 0.9, 0.0, 1.0, false, "");
-  p.simulation.duration = simulation.number("duration", 10.0, 0.0, 1e7, true, "s");
+  p.simulation.rho_infinity = simulation.number("rho_infinity", 0.9, ranges::kRhoInfinity);
+  p.simulation.duration = simulation.number("duration", 10.0, ranges::kDuration);
   p.simulation.formulation = simulation.choice("formulation", "recursive", {"paper", "recursive"}) == "recursive"
                                  ? Formulation::kRecursive
                                  : Formulation::kPaper;

@@ -10,27 +10,12 @@ std::string join(const std::string& section, const std::string& key) {
   return section.empty() ? key : section + "." + key;
 }
 
-std::string rangeText(double lo, double hi, bool lo_open, const char* unit) {
-  std::ostringstream s;
-  s << "a finite number";
-  if (std::isfinite(lo) && std::isfinite(hi)) {
-    s << " in " << (lo_open ? "(" : "[") << lo << ", " << hi << "]";
-  } else if (std::isfinite(lo)) {
-    s << (lo_open ? " > " : " >= ") << lo;
-  } else if (std::isfinite(hi)) {
-    s << " <= " << hi;
-  }
-  if (unit != nullptr && *unit != '\0') s << " [" << unit << "]";
-  return s.str();
-}
-
 /// A scalar written as a string ('25' or "25" in YAML; a string on the parameter server, which
 /// node_options.cpp tags "!") is not a number, whatever its characters.
 bool isQuoted(const YAML::Node& v) { return v.Tag() == "!"; }
 
-double checkNumber(const YAML::Node& v, const std::string& full, double lo, double hi, bool lo_open,
-                   const char* unit) {
-  const std::string expected = rangeText(lo, hi, lo_open, unit);
+double checkNumber(const YAML::Node& v, const std::string& full, const NumberRange& range) {
+  const std::string expected = range.text();
   double value = 0.0;
   try {
     if (!v.IsScalar() || isQuoted(v)) throw YAML::Exception(YAML::Mark::null_mark(), "not a plain scalar");
@@ -38,8 +23,7 @@ double checkNumber(const YAML::Node& v, const std::string& full, double lo, doub
   } catch (const YAML::Exception&) {
     throw ConfigError(full, describeNode(v), expected);
   }
-  const bool below = lo_open ? !(value > lo) : !(value >= lo);
-  if (!std::isfinite(value) || below || value > hi) throw ConfigError(full, describeNode(v), expected);
+  if (!range.allows(value)) throw ConfigError(full, describeNode(v), expected);
   return value;
 }
 
@@ -91,6 +75,14 @@ void ConfigSection::mark(const std::string& key, bool section) {
   if (active_log != nullptr) (section ? active_log->sections_ : active_log->asked_).insert(full(key));
 }
 
+void ConfigSection::markRanged(const std::string& key) const {
+  if (active_log != nullptr) active_log->ranged_.insert(full(key));
+}
+
+void logCheckedKey(const std::string& key) {
+  if (active_log != nullptr) active_log->checked_.insert(key);
+}
+
 bool ConfigSection::has(const std::string& key) {
   mark(key);
   return node_.IsDefined() && !node_.IsNull() && at(key).IsDefined() && !at(key).IsNull();
@@ -106,18 +98,19 @@ YAML::Node ConfigSection::raw(const std::string& key) {
   return at(key);
 }
 
-double ConfigSection::number(const std::string& key, double fallback, double lo, double hi, bool lo_open,
-                             const char* unit, bool required) {
+double ConfigSection::number(const std::string& key, double fallback, const NumberRange& range, bool required) {
+  markRanged(key);
   if (!has(key)) {
-    if (required) throw ConfigError(full(key), "(missing)", rangeText(lo, hi, lo_open, unit));
+    if (required) throw ConfigError(full(key), "(missing)", range.text());
     return fallback;
   }
-  return checkNumber(at(key), full(key), lo, hi, lo_open, unit);
+  return checkNumber(at(key), full(key), range);
 }
 
-int ConfigSection::integer(const std::string& key, int fallback, int lo, int hi, bool required) {
+int ConfigSection::integer(const std::string& key, int fallback, const IntegerRange& range, bool required) {
+  markRanged(key);
   const std::string name = full(key);
-  const std::string expected = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  const std::string expected = range.text();
   if (!has(key)) {
     if (required) throw ConfigError(name, "(missing)", expected);
     return fallback;
@@ -133,7 +126,7 @@ int ConfigSection::integer(const std::string& key, int fallback, int lo, int hi,
   } catch (const std::exception&) {
     throw ConfigError(name, describeNode(v), expected);
   }
-  if (value < lo || value > hi) throw ConfigError(name, describeNode(v), expected);
+  if (!range.allows(value)) throw ConfigError(name, describeNode(v), expected);
   return static_cast<int>(value);
 }
 
@@ -147,8 +140,8 @@ std::string ConfigSection::choice(const std::string& key, const std::string& fal
   return v.Scalar();
 }
 
-std::vector<double> ConfigSection::perJoint(const std::string& key, int count, double lo, double hi,
-                                            const char* unit) {
+std::vector<double> ConfigSection::perJoint(const std::string& key, int count, const NumberRange& range) {
+  markRanged(key);
   const std::string name = full(key);
   if (!has(key)) return std::vector<double>(count, 0.0);
   const YAML::Node v = at(key);
@@ -159,16 +152,16 @@ std::vector<double> ConfigSection::perJoint(const std::string& key, int count, d
     }
     std::vector<double> out;
     for (std::size_t i = 0; i < v.size(); ++i) {
-      out.push_back(checkNumber(v[i], name + "[" + std::to_string(i) + "]", lo, hi, false, unit));
+      out.push_back(checkNumber(v[i], name + "[" + std::to_string(i) + "]", range));
     }
     return out;
   }
-  return std::vector<double>(count, checkNumber(v, name, lo, hi, false, unit));
+  return std::vector<double>(count, checkNumber(v, name, range));
 }
 
-std::vector<double> ConfigSection::numberList(const std::string& key, int count, double lo, double hi, bool lo_open,
-                                              const char* unit) {
+std::vector<double> ConfigSection::numberList(const std::string& key, int count, const NumberRange& range) {
   mark(key);
+  markRanged(key);
   const std::string name = full(key);
   const YAML::Node v = at(key);
   if (!v.IsSequence() || static_cast<int>(v.size()) != count) {
@@ -176,7 +169,7 @@ std::vector<double> ConfigSection::numberList(const std::string& key, int count,
   }
   std::vector<double> out;
   for (std::size_t i = 0; i < v.size(); ++i) {
-    out.push_back(checkNumber(v[i], name + "[" + std::to_string(i) + "]", lo, hi, lo_open, unit));
+    out.push_back(checkNumber(v[i], name + "[" + std::to_string(i) + "]", range));
   }
   return out;
 }

@@ -113,6 +113,7 @@ void checkAxialElasticity(const CableParams& p) {
 }  // namespace
 
 void checkConfigRules(const CableParams& p) {
+  checkConfigRanges(p);
   checkAxialElasticity(p);
   const StiffnessParams& k = p.stiffness;
   if (k.bending_rigidity > 0.0 && (k.elevation > 0.0 || k.azimuth > 0.0)) {
@@ -256,10 +257,8 @@ void checkAttitude(const char* key, const Eigen::Quaterniond& attitude) {
 
 void checkCurrent(const Eigen::Vector3d& current) {
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(current(i)) || std::abs(current(i)) > kMaxCurrentSpeed) {
-      // As the loader words fluid.current's range (config_section.cpp).
-      throw ConfigError("fluid.current[" + std::to_string(i) + "]", number(current(i)),
-                        "a finite number in [-" + number(kMaxCurrentSpeed) + ", " + number(kMaxCurrentSpeed) + "] [m/s]");
+    if (!ranges::kCurrent.allows(current(i))) {
+      throw ConfigError("fluid.current[" + std::to_string(i) + "]", number(current(i)), ranges::kCurrent.text());
     }
   }
 }

@@ -12,8 +12,8 @@ namespace {
 /// spacing [dx, dy] [m], depth: rows along y, each a list along x [m].
 SeabedGrid parseGrid(ConfigSection grid) {
   SeabedGrid g;
-  const std::vector<double> origin = grid.numberList("origin", 2, -1e7, 1e7, false, "m");
-  const std::vector<double> spacing = grid.numberList("spacing", 2, 0.0, 1e6, true, "m");
+  const std::vector<double> origin = grid.numberList("origin", 2, ranges::kGridOrigin);
+  const std::vector<double> spacing = grid.numberList("spacing", 2, ranges::kGridSpacing);
   g.origin = {origin[0], origin[1]};
   g.spacing = {spacing[0], spacing[1]};
   const std::string key = grid.path() + ".depth";
@@ -33,8 +33,8 @@ SeabedGrid parseGrid(ConfigSection grid) {
       double value = 0.0;
       const YAML::Node cell = rows[j][i];
       const bool plain = cell.IsScalar() && cell.Tag() != "!";  // a quoted '25' is not a number
-      if (!plain || !YAML::convert<double>::decode(cell, value) || !std::isfinite(value) || std::abs(value) > 1e5) {
-        throw ConfigError(row_key + "[" + std::to_string(i) + "]", describeNode(cell), "a finite depth in [-1e5, 1e5] m");
+      if (!plain || !YAML::convert<double>::decode(cell, value) || !ranges::kGridDepth.allows(value)) {
+        throw ConfigError(row_key + "[" + std::to_string(i) + "]", describeNode(cell), ranges::kGridDepth.text());
       }
       g.depth(j, i) = value;
     }
@@ -60,7 +60,7 @@ void parseSeabed(ConfigSection seabed, const std::string& base_dir, CableParams&
     throw ConfigError(seabed.path(), has_depth || has_grid || has_file ? "more than one of depth, grid, grid_file" : "no depth",
                       "exactly one of seabed.depth [m] (flat), seabed.grid or seabed.grid_file (bathymetry)");
   }
-  if (has_depth) s.depth = seabed.number("depth", 0.0, 0.0, 1e5, true, "m");
+  if (has_depth) s.depth = seabed.number("depth", 0.0, ranges::kSeabedDepth);
   if (has_grid) {
     s.has_grid = true;
     s.grid = parseGrid(seabed.sub("grid"));
@@ -78,15 +78,15 @@ void parseSeabed(ConfigSection seabed, const std::string& base_dir, CableParams&
     s.grid = parseGrid(ConfigSection(file, path));
   }
   const double diameter = largestDiameter(p);
-  s.penetration = seabed.number("penetration", 0.5 * diameter, 0.0, 1e3, true, "m");
-  s.stiffness = seabed.number("stiffness", 0.0, 0.0, 1e12, false, "N/m^2 (0: from the penetration)");
-  s.damping_ratio = seabed.number("damping_ratio", 0.5, 0.0, 10.0, false, "");
+  s.penetration = seabed.number("penetration", 0.5 * diameter, ranges::kPenetration);
+  s.stiffness = seabed.number("stiffness", 0.0, ranges::kSeabedStiffness);
+  s.damping_ratio = seabed.number("damping_ratio", 0.5, ranges::kDampingRatio);
   ConfigSection friction = seabed.sub("friction");
-  s.friction_axial = friction.number("axial", 0.0, 0.0, 10.0, false, "");
-  s.friction_lateral = friction.number("lateral", 0.0, 0.0, 10.0, false, "");
-  s.friction_velocity = friction.number("velocity", 0.01, 0.0, 10.0, true, "m/s");
+  s.friction_axial = friction.number("axial", 0.0, ranges::kFriction);
+  s.friction_lateral = friction.number("lateral", 0.0, ranges::kFriction);
+  s.friction_velocity = friction.number("velocity", 0.01, ranges::kFrictionVelocity);
   friction.rejectUnknownKeys();
-  s.contact_points = seabed.integer("contact_points", 4, 1, 16, false);
+  s.contact_points = seabed.integer("contact_points", 4, ranges::kContactPoints);
   seabed.rejectUnknownKeys();
 }
 

@@ -21,8 +21,17 @@ void checkSimulatorInputs(const CableParams& params, const LinkProperties& prope
   if (use == SimulatorUse::kStepping) requireStableTimeStep(params, properties);  // not for the two others
 }
 
+namespace {
+/// `p`, once each value is within its key's range: before any member is built from it (a link count or
+/// a list size out of range would otherwise reach an allocation or an index first).
+const CableParams& inRange(const CableParams& p) {
+  checkConfigRanges(p);
+  return p;
+}
+}  // namespace
+
 CableSimulator::CableSimulator(const CableParams& configured, SimulatorUse use)
-    : params_(ChainModel::withDrumSlots(configured)),
+    : params_(ChainModel::withDrumSlots(inRange(configured))),
       use_(use),
       dynamics_(params_),
       scheme_(makeTimeScheme(params_.simulation.integrator, params_.links, params_.simulation.rho_infinity,

@@ -2,6 +2,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cable_dynamics/params/input_gate.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/simulation/tunable_keys.h"
 
@@ -34,7 +35,9 @@ void CableSimulator::retune(const CableParams& tuned) {
     for (std::size_t i = 0; i < next.sections.size(); ++i) k.in_section(next.sections[i]) = k.in_section(given.sections[i]);
   }
 
-  // Built and checked aside, so that a refusal leaves the running model as it was.
+  // Built and checked aside, so that a refusal leaves the running model as it was; the ranges before
+  // the model is built from them.
+  checkConfigRanges(next);
   const ChainModel model(next);
   ChainDeployment deployed = dynamics_.deployed();  // the running deployment, with the new constants
   model.redeploy(deployed);

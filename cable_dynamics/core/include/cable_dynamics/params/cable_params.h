@@ -227,14 +227,19 @@ struct WinchParams {
   double speed = 0.0;             ///< commanded speed at start [m/s]
   std::vector<WinchCommand> schedule;  ///< time-ordered commands (offline runs)
   /// The slots the drum needs for the longest deployment, in front of the configured cable.links: the
-  /// config loader counts them (and refuses more than kMaxLinks in all); the model puts them in front of
-  /// the configured cable (ChainModel::withDrumSlots), which marks it in `slots_built`.
+  /// config loader counts them (drumSlotsFor; the gate refuses more than ranges::kLinks in all); the model
+  /// puts them in front of the configured cable (ChainModel::withDrumSlots), which marks it in `slots_built`.
   int stored_links = 0;
   /// true in the model's copy of the parameters, where links, link_lengths and initial.* count the drum's
   /// slots too (CableSimulator::params()); false as the config loader gives them: the configured cable.
   bool slots_built = false;
   double link_length = 0.0;       ///< length of a link added at the winch [m] (the base link's configured length)
 };
+
+/// The slots the drum needs (WinchParams::stored_links) for the longest deployment w.max_length from the
+/// configured `deployed` length [m], in links of w.link_length: one more than the whole links it adds,
+/// since the winch's link is between one and 2.25 links long.
+int drumSlotsFor(const WinchParams& w, double deployed);
 
 /// One section of the cable (`cable.sections`): a stretch of `length` along the configured cable, counted
 /// from its base, with properties of its own. The loader fills every field (a key left out takes the
@@ -305,7 +310,8 @@ struct SeabedParams {
   int contact_points = 4;          ///< points per link at which the contact is evaluated (midpoint rule)
 };
 
-/// Every parameter of one cable, validated by the config loader; SI units.
+/// Every parameter of one cable; SI units. The config loader fills and checks it; filled in by hand, the
+/// simulator checks it against the same ranges before it uses it (checkConfigRanges, params/input_gate.h).
 struct CableParams {
   /// n, number of rigid links as configured (cable.links). In the model's copy with a winch
   /// (winch.slots_built: ChainModel::withDrumSlots), every slot the longest deployment needs, the first

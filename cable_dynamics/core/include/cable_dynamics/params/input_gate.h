@@ -14,6 +14,7 @@
 
 #include "cable_dynamics/params/cable_params.h"
 #include "cable_dynamics/params/config_section.h"
+#include "cable_dynamics/params/key_ranges.h"
 
 namespace cable_dynamics {
 
@@ -26,14 +27,23 @@ constexpr double kMaxInputPosition = 1e6;
 constexpr double kMaxInputSpeed = 20.0;
 /// Largest thrust force and torque an ROV body takes (each component) [N], [N m]: beyond any thruster.
 constexpr double kMaxThrust = 1e7;
-/// Largest |component| of the current, as fluid.current in a config [m/s].
-constexpr double kMaxCurrentSpeed = 100.0;
+// kMaxCurrentSpeed, the current's limit, is fluid.current's range (params/key_ranges.h).
 
 /// The text of a winch command on a cable without a winch.
 extern const char* const kNoWinchMessage;
 
+/// Every value of `p` within its key's range (params/key_ranges.h, the ranges the config loader reads
+/// with), and the shapes a config gives: one link length and one initial angle of each kind per link,
+/// section lengths adding up to the cable's, a winch's drum slots as the loader counts them, unit
+/// directions, a profile's depths increasing. For parameters filled in by hand in C++; a config's pass
+/// again. `p` may be the configured cable or the model's copy with a winch's drum slots built. Throws
+/// ConfigError naming the key (`cable.sections[2].diameter`, `load.motion.offset[1]`), the value and the
+/// range, as the loader does (range_gate.cpp).
+void checkConfigRanges(const CableParams& p);
+
 /// The rules between config keys that a parsed config obeys (one stiffness law or the other, what a
-/// winch, a clamped tip and the paper model allow). Throws ConfigError on the first broken one.
+/// winch, a clamped tip and the paper model allow), after checkConfigRanges(). Throws ConfigError on the
+/// first broken one.
 void checkConfigRules(const CableParams& p);
 
 /// What the simulator adds: the paper's azimuth and torsion springs and dampers are singular at the
