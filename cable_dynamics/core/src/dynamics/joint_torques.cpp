@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "cable_dynamics/dynamics/forces/joint_springs.h"
 #include "cable_dynamics/dynamics/forces/tip_clamp.h"
 #include "cable_dynamics/dynamics/joint_geometry.h"
 #include "cable_dynamics/dynamics/paper_coordinates.h"
@@ -56,15 +57,17 @@ void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen:
     const Eigen::Vector3d axis = links.get(&LinkBlock::u, k);
     const JointGeometry g =
         jointGeometry(prev, axis, x(StateLayout::twist(k)), inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
-    // Bend: V = 1/2 k_b beta^2 (forces/joint_springs.h).
-    const Eigen::Vector3d bend_torque = bendSpringTorque(p.stiffness_elevation(k), g.bend, g.sine, g.cross);
+    // Bend: V = 1/2 k_b beta^2 (forces/joint_springs.h), and between two links folded onto each other
+    // their fold stop (forces/fold_stop.h).
+    Eigen::Vector3d bend_torque = bendSpringTorque(p.stiffness_elevation(k), g.bend, g.sine, g.cross);
+    if (inner && g.cosine < 0.0) bend_torque += model.foldStop(p, k).torque(g.bend, g.sine, g.cross);
     // Twist: a rotation dTheta of link k changes it by -(prev + u_k)/(1 + prev.u_k) . dTheta.
     const Eigen::Vector3d mean_axis = (prev + axis) / (1.0 + g.cosine);
     const Eigen::Vector3d twist_torque = p.stiffness_torsion(k) * g.twist * mean_axis;
     // Dampers on the relative angular velocity: across the mean axis (bending) and about it (twist).
     const Eigen::Vector3d relative =
         links.get(&LinkBlock::omega, k) - (inner ? links.get(&LinkBlock::omega, k - 1) : data.clamp_omega);
-    const Eigen::Vector3d direction = (prev + axis).normalized();
+    const Eigen::Vector3d direction = meanAxis(prev, axis, axis);  // defined at a fold of pi too
     const double about = relative.dot(direction);
     const Eigen::Vector3d damper =
         -p.damping_elevation(k) * (relative - about * direction) - p.damping_torsion(k) * about * direction;
@@ -185,6 +188,7 @@ double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::Vect
     const JointGeometry g = jointGeometry(prev, links.get(&LinkBlock::u, k), x(StateLayout::twist(k)),
                                           inner ? x(StateLayout::twist(k - 1)) : data.clamp_twist);
     energy += 0.5 * p.stiffness_elevation(k) * g.bend * g.bend + 0.5 * p.stiffness_torsion(k) * g.twist * g.twist;
+    if (inner && g.cosine < 0.0) energy += model.foldStop(p, k).energy(g.bend);
   }
   if (p.tip_clamp_stiffness > 0.0) energy += model.tipClamp().energy(links.get(&LinkBlock::u, model.links() - 1), data.tip_clamp_axis);
   return energy;

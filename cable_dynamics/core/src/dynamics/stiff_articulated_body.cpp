@@ -69,7 +69,13 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
     if (bending) {
       const Eigen::Vector3d prev = k > first ? blocks.get(&LinkBlock::u, k - 1) : data.clamp_axis;
       const Eigen::Vector3d mean = meanAxis(prev, u, u);
-      t.joint_stiffness = jointBlock(p.stiffness_elevation(k), p.stiffness_torsion(k), mean);
+      // A joint folded onto its neighbour adds its fold stop's tangent across (forces/fold_stop.h).
+      double across = p.stiffness_elevation(k);
+      const double cosine = prev.dot(u);
+      if (k > first && cosine < 0.0) {
+        across += model.foldStop(p, k).tangent(std::atan2(prev.cross(u).norm(), cosine));
+      }
+      t.joint_stiffness = jointBlock(across, p.stiffness_torsion(k), mean);
       t.joint_damping = jointBlock(p.damping_elevation(k), p.damping_torsion(k), mean);
     }
     // Drag: its damping over (omega, v_base), with the current at the link's middle (LinkDrag::damping).

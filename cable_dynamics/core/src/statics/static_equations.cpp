@@ -1,9 +1,11 @@
 #include "static_equations.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cable_dynamics/dynamics/forces/contact.h"
 #include "cable_dynamics/dynamics/forces/coupling.h"
+#include "cable_dynamics/dynamics/forces/fold_stop.h"
 #include "cable_dynamics/dynamics/forces/joint_springs.h"
 #include "cable_dynamics/dynamics/forces/point_drag.h"
 #include "cable_dynamics/dynamics/forces/tip_clamp.h"
@@ -22,7 +24,8 @@ StaticEquations::StaticEquations(const ChainModel& model, const ChainDeployment&
       length_(m_),
       weight_(m_),
       weight_moment_(m_),
-      bend_stiffness_(m_) {
+      bend_stiffness_(m_),
+      fold_diameter_(m_) {
   const LinkProperties& p = deployed.properties();
   const bool bending = model.stiffnessModel() == StiffnessModel::kBending;
   for (int i = 0; i < m_; ++i) {
@@ -34,7 +37,9 @@ StaticEquations::StaticEquations(const ChainModel& model, const ChainDeployment&
     // A winch pays out from the drum: the first deployed link leaves the base's clamp, with the spring of
     // the joint it has in the model.
     bend_stiffness_(i) = bending ? p.stiffness_elevation(k) : 0.0;
+    fold_diameter_(i) = 2.0 * std::max(p.radius(k), k > first_ ? p.radius(k - 1) : 0.0);
   }
+  fold_tension_ = bending ? model.foldStopTension() : 0.0;
   has_bend_ = (bend_stiffness_.array() > 0.0).any();
   in_water_ = model.fluidDensity() > 0.0;
   // An exact anchor's statics hold the tip with a spring whose target solveStatics shifts until the tip
@@ -141,8 +146,15 @@ Eigen::Vector3d StaticEquations::outboardForce(const StaticState& s, int i) cons
 
 Eigen::Vector3d StaticEquations::bendTorque(int i, const Eigen::Vector3d& prev, const Eigen::Vector3d& axis) const {
   const double k = stiffness_scale_ * bend_stiffness_(i);
-  if (k == 0.0) return Eigen::Vector3d::Zero();
-  return bendSpringTorque(k, prev, axis);  // as joint_torques.cpp's bend spring
+  Eigen::Vector3d torque = k == 0.0 ? Eigen::Vector3d::Zero() : bendSpringTorque(k, prev, axis);  // as joint_torques.cpp's
+  // A joint folded onto its neighbour: the fold stop (forces/fold_stop.h), a contact, not ramped with the
+  // springs. Between two links only (i > 0), as in the dynamics.
+  if (i > 0 && prev.dot(axis) < 0.0) {
+    const Eigen::Vector3d cross = prev.cross(axis);
+    const double sine = cross.norm(), bend = std::atan2(sine, prev.dot(axis));
+    torque += FoldStop::between(length_(i - 1), length_(i), fold_diameter_(i), fold_tension_).torque(bend, sine, cross);
+  }
+  return torque;
 }
 
 void StaticEquations::residual(const StaticState& s, int i, LinkResidual& r) const {

@@ -5,6 +5,7 @@
 ///        the winch changes included). Every method is const; live tuning replaces the whole model
 ///        between steps (CableSimulator::retune) and redeploys the data's cable with it.
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "cable_dynamics/dynamics/chain_deployment.h"
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/forces/coupling.h"
+#include "cable_dynamics/dynamics/forces/fold_stop.h"
 #include "cable_dynamics/dynamics/forces/tip_clamp.h"
 #include "cable_dynamics/dynamics/link_block.h"
 #include "cable_dynamics/dynamics/rov_body.h"
@@ -101,6 +103,13 @@ class ChainModel {
   double holdStiffness() const { return hold_stiffness_; }
   /// The ROV body hung on the tip (load.mode body; inactive otherwise).
   const RovBodyConstants& body() const { return body_; }
+  /// The hanging tension that sizes the joints' fold stops (forces/fold_stop.h) [N]: g times the
+  /// magnitudes of the submerged masses of every slot as configured, its attachments and the load.
+  double foldStopTension() const { return fold_stop_tension_; }
+  /// The fold stop of joint k (between slots k-1 and k, k >= 1) at the lengths of `p` (a deployment's).
+  FoldStop foldStop(const LinkProperties& p, int k) const {
+    return FoldStop::between(p.length(k - 1), p.length(k), 2.0 * std::max(p.radius(k - 1), p.radius(k)), fold_stop_tension_);
+  }
   /// A clamped tip's bend spring and damper (forces/tip_clamp.h; inactive unless load.fixity is clamped).
   TipClamp tipClamp() const { return {nominal_.tip_clamp_stiffness, nominal_.tip_clamp_damping}; }
   /// The seabed and its contact's constants (disabled when the config has no seabed).
@@ -128,6 +137,7 @@ class ChainModel {
   bool last_locked_ = false;
   bool held_tip_ = false;
   double hold_time_constant_ = 0.0, hold_stiffness_ = 0.0;
+  double fold_stop_tension_ = 0.0;
   LinkProperties nominal_;  ///< every slot as configured (the drum's at the length they will have)
   Formulation formulation_;
   bool has_springs_;
