@@ -21,6 +21,7 @@
 #include "cable_dynamics/dynamics/forces/fold_stop.h"
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
+#include "tether_onto_the_bottom.h"
 
 using namespace cable_dynamics;
 
@@ -41,23 +42,9 @@ double largestBend(const SimulationSnapshot& s) {
   return largest;
 }
 
-/// The limp tether of issue 27 item 4: test_seabed's tetherOntoTheBottom with no bend spring. 12 m in
-/// water, 2 m on the bottom 10 m below the winch, a current along x; the winch pays out 8 m from t = 0 and
-/// hauls it back in from t = 25 s.
-CableParams limpTetherOntoTheBottom(double torsional_rigidity, const std::vector<std::string>& overrides) {
-  return loadConfigString(
-      "cable: {links: 12, length: 12.0, diameter: 0.02, mass_per_length: 0.8,\n"
-      "        stiffness: {model: bending, bending_rigidity: 0.0, torsional_rigidity: " +
-          std::to_string(torsional_rigidity) +
-          "}}\n"
-          "fluid: {current: [0.3, 0.0, 0.0]}\n"
-          "seabed: {depth: 10.0, friction: {axial: 0.3, lateral: 0.6}}\n"
-          "initial: {mode: equilibrium}\n"
-          "winch: {max_length: 24.0, min_length: 6.0, max_speed: 0.5, max_acceleration: 0.5, schedule: "
-          "[{time: 0.0, speed: 0.4}, {time: 20.0, speed: 0.0}, {time: 25.0, speed: -0.4}, {time: 45.0, speed: 0.0}]}\n"
-          "simulation: {dt: 0.001}\n",
-      overrides);
-}
+/// The limp tether of issue 27 item 4: test_seabed's winch case (tether_onto_the_bottom.h) with no bend
+/// spring.
+CableParams limpTetherOntoTheBottom(double torsional_rigidity) { return tetherOntoTheBottom(0.0, torsional_rigidity, {}); }
 
 }  // namespace
 
@@ -113,7 +100,7 @@ TEST(FoldStop, ALimpTetherPaidOutOntoTheBottomPilesUpWithoutFoldingThroughItself
   // A limp tether paid out onto the bottom of a planar current piles up as a standing zigzag, link folded
   // on link at the stop, in the plane of the current (nothing breaks the symmetry that would topple it).
   for (double torsion : {2.0, 0.0}) {
-    CableSimulator sim(limpTetherOntoTheBottom(torsion, {}));
+    CableSimulator sim(limpTetherOntoTheBottom(torsion));
     SimulationSnapshot s;
     double most_bent = 0.0, deepest = 0.0;
     for (int i = 1; i <= 50000; ++i) {

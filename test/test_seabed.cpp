@@ -15,6 +15,7 @@
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "refused_key.h"
+#include "tether_onto_the_bottom.h"
 
 using namespace cable_dynamics;
 
@@ -453,20 +454,9 @@ TEST(SeabedContact, TheHotPathsFlatBedSpecializationIsTheGeneralContact) {
 
 namespace {
 
-/// A 12 m tether (EI 5 N m^2) in water hanging 2 m onto the bottom 10 m below the winch, with a current
-/// along x; the winch pays out 8 m from t = 0 and hauls it back in from t = 25 s. RK4 at 1 ms unless
-/// `overrides` say otherwise.
+/// The winch case (tether_onto_the_bottom.h) with EI 5 N m^2 and GJ 2 N m^2.
 CableParams tetherOntoTheBottom(const std::vector<std::string>& overrides) {
-  return loadConfigString(
-      "cable: {links: 12, length: 12.0, diameter: 0.02, mass_per_length: 0.8,\n"
-      "        stiffness: {model: bending, bending_rigidity: 5.0, torsional_rigidity: 2.0}}\n"
-      "fluid: {current: [0.3, 0.0, 0.0]}\n"
-      "seabed: {depth: 10.0, friction: {axial: 0.3, lateral: 0.6}}\n"
-      "initial: {mode: equilibrium}\n"
-      "winch: {max_length: 24.0, min_length: 6.0, max_speed: 0.5, max_acceleration: 0.5, schedule: "
-      "[{time: 0.0, speed: 0.4}, {time: 20.0, speed: 0.0}, {time: 25.0, speed: -0.4}, {time: 45.0, speed: 0.0}]}\n"
-      "simulation: {dt: 0.001}\n",
-      overrides);
+  return cable_dynamics::tetherOntoTheBottom(5.0, 2.0, overrides);
 }
 
 }  // namespace
