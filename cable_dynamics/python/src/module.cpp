@@ -122,7 +122,7 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
       .def_property_readonly("energy_drift", &PythonSimulator::energyDrift,
                              "drift of the energy balance as a fraction of the energy scale (RK4; -1 otherwise)")
       .def_property_readonly("retried_steps", &PythonSimulator::retriedSteps)
-      .def("stable_time_step", &PythonSimulator::stableTimeStep, "the recommended RK4 dt: half its estimated stability limit [s]")
+      .def("stable_time_step", &PythonSimulator::stableTimeStep, "the recommended RK4 dt: half its estimated stability limit, or less where accuracy needs it (a chain released in air) [s]")
       .def("snapshot", &PythonSimulator::snapshot, "The present instant as a Snapshot (numpy arrays).")
       .def(
           "run",

@@ -78,7 +78,7 @@ CableNode::CableNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                                      << options_.input_timeout << " s, at most " << stepsPerCycleCap(options_, sim_->dt())
                                      << " steps per cycle, max lag " << options_.max_lag
                                      << " s; recommended RK4 step " << sim_->estimateStableTimeStep()
-                                     << " s (half its estimated stability limit)");
+                                     << " s (half its estimated stability limit, or less where accuracy needs it: a chain released in air)");
   const double per_cycle = stepsPerCycleCap(options_, sim_->dt()) * sim_->dt();  // [s] of simulated time
   if (per_cycle * options_.rate < 1.0) {
     ROS_WARN_STREAM("cable_dynamics: ros.max_steps_per_cycle = " << options_.max_steps_per_cycle << " steps of "

@@ -150,13 +150,18 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   CableSimulator& sim = *simulator;
   const StableStep stable = estimateStableStep(params, sim.properties());
   err << "cable_sim: " << params.links << " links, " << integratorName(params.simulation.integrator) << ", dt = " << sim.dt()
-      << " s, recommended RK4 step " << stable.recommended << " s (half its estimated stability limit "
-      << stable.limit << " s; " << stable.mode << ")";
+      << " s, recommended RK4 step " << stable.recommended << " s (";
+  if (stable.whip < stable.limit / 2.0) err << "for accuracy, " << stable.whip_mode << "; its estimated stability limit ";
+  else err << "half its estimated stability limit ";
+  err << stable.limit << " s; " << stable.mode << ")";
   if (params.simulation.integrator == Integrator::kImplicit) {
     err << "; implicit: recommended dt " << stable.implicit_recommended << " s (" << stable.implicit_mode << ")"
         << (sim.dt() > stable.implicit_recommended ? "  (dt is larger: less accurate, still stable)" : "") << "\n";
   } else {
-    err << (sim.dt() > stable.recommended ? "  (dt is larger: expect substeps)" : "") << "\n";
+    const bool past_whip = sim.dt() > stable.recommended && sim.dt() <= stable.limit / 2.0;
+    err << (past_whip ? "  (dt is larger: steps may be retried where the chain whips)"
+                      : sim.dt() > stable.recommended ? "  (dt is larger: expect substeps)" : "")
+        << "\n";
   }
 
   std::ofstream csv(o.output);

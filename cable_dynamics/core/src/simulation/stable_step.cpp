@@ -8,8 +8,10 @@
 #include <sstream>
 #include <vector>
 
+#include "cable_dynamics/dynamics/elastic_joints.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
 #include "cable_dynamics/params/config_section.h"
+#include "cable_dynamics/params/states.h"
 
 namespace cable_dynamics {
 namespace {
@@ -139,6 +141,59 @@ void recommendImplicitStep(const CableParams& params, const LinkProperties& p, d
     s.implicit_recommended = kAccuracy / fastest;
     s.implicit_mode = torsional > third_bending ? "the first torsional mode" : "the third bending mode";
   }
+}
+
+/// The turn a link may make in one RK4 step and stay accurate [rad]. Measured on paper_free_fall_air with
+/// a planner that split steps by each link's actual turn: 8 steps still retried at 0.1 rad, 1 at 0.05; the
+/// bound below reads the turn from the whole released energy put into the lightest link's spin, at least
+/// 1.3 times the actual turn there (0 steps retried at the 0.75 ms it gives, and at 1 ms).
+constexpr double kWhipTurn = 0.1;
+
+/// The whip's step (StableStep::whip) for a chain released in air, infinity when the case is not one:
+/// in water the drag bounds the flow past the cable (the tension bound's assumption); with an end that
+/// moves, a winch or a load held by anything, energy comes in that the configuration does not bound;
+/// released in its equilibrium or stretching (an axial spring stores energy that the bound does not
+/// follow), it is not taken. The released energy E = V(q0) - min V over the shapes the cable can take:
+/// the weights' potential (each mass at most its arc length below the base, as deep as a straight hang)
+/// and the joint springs' energy at q0 (ElasticJoints; none left at the minimum, a lower bound on it).
+double whipStep(const CableParams& params, const LinkProperties& p, std::string& mode) {
+  const double infinity = std::numeric_limits<double>::infinity();
+  const bool still = fastestSpeed(params.base.motion) == 0.0 && params.base.motion.attitude_amplitude.isZero();
+  if (params.fluid.density > 0.0 || !still || params.winch.enabled || params.load.mode != LoadMode::kFree ||
+      params.initial.mode != InitialMode::kAngles || params.stretches()) {
+    return infinity;
+  }
+  const int n = p.n;
+  Eigen::VectorXd q, qd;
+  initialState(params, q, qd);
+  // Depths along the paper's z (down) from the base: link k's axis has z component cos(elevation_k).
+  double released = ElasticJoints(p).energy(q), depth = 0.0, arc = 0.0, lightest = infinity;
+  for (int k = 0; k < n; ++k) {
+    const double l = p.length(k), w = p.gravity * p.submerged_mass(k);
+    const double centre_depth = depth + 0.5 * l * std::cos(q(3 * k)), centre_arc = arc + 0.5 * l;
+    released += -w * centre_depth + std::abs(w) * centre_arc;  // V(q0) - (its least value)
+    depth += l * std::cos(q(3 * k));
+    arc += l;
+    lightest = std::min(lightest, p.mass(k) * l * l / 12.0);
+  }
+  for (const LinkAttachment& a : p.attachments) {
+    double d = 0.0, s = 0.0;
+    for (int k = 0; k < a.link; ++k) {
+      d += p.length(k) * std::cos(q(3 * k));
+      s += p.length(k);
+    }
+    const double w = p.gravity * a.submerged_mass;
+    released += -w * (d + a.offset * std::cos(q(3 * a.link))) + std::abs(w) * (s + a.offset);
+  }
+  const double w_load = p.gravity * p.load_submerged_mass;
+  released += -w_load * depth + std::abs(w_load) * arc;
+  if (!(released > 0.0) || !(lightest > 0.0)) return infinity;
+  const double fastest = std::sqrt(2.0 * released / lightest);  // [rad/s]
+  std::ostringstream text;
+  text << "the whip of a chain released in air: " << released << " J set free, a link turning up to " << fastest
+       << " rad/s, " << kWhipTurn << " rad a step";
+  mode = text.str();
+  return kWhipTurn / fastest;
 }
 
 }  // namespace
@@ -318,6 +373,8 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
   s.mode = stiffest.mode;
   s.limit = stiffest.limit;
   s.recommended = s.limit < infinity ? s.limit / kMargin : infinity;
+  s.whip = whipStep(params, p, s.whip_mode);
+  s.recommended = std::min(s.recommended, s.whip);
   recommendImplicitStep(params, p, hanging, s);
   return s;
 }

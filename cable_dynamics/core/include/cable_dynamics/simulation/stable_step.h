@@ -11,7 +11,16 @@ namespace cable_dynamics {
 
 /// The stiffest mode of a cable and the time steps it allows.
 struct StableStep {
-  double recommended = 0.0;  ///< RK4 with a factor 2 of margin: limit / 2 [s]
+  /// RK4's step: the limit with a factor 2 of margin, limit / 2, or the whip's step where that is smaller [s]
+  double recommended = 0.0;
+  /// A bound for accuracy (infinity where none applies) [s]: a chain released in air from a raised shape
+  /// with still ends (nothing damps it and nothing feeds it) whips, each link turning at most at
+  /// sqrt(2 E / I) with E the energy its release can free and I the smallest link's inertia about its
+  /// centre; RK4's steps stay accurate (the step check's 1e-4 of the energy scale) while each turns by at
+  /// most 0.1 rad a step (docs/MODEL.md section 6). paper_free_fall_air: 0.75 ms against the 41 ms that the
+  /// stability alone allows, where 54 to 70 of 488 steps needed substeps (issue 27 item 3).
+  double whip = 0.0;
+  std::string whip_mode;  ///< what sets `whip`, or empty when it is infinity
   double limit = 0.0;        ///< RK4's own limit for the bounded modes: beyond it the limiting mode grows [s]
   double rate = 0.0;         ///< the largest |lambda| of the limiting mode's bound [1/s]
   std::string mode;          ///< which mode, e.g. "the spin of link 3 (torsion springs, torsion and bend dampers)"
