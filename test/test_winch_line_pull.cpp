@@ -8,6 +8,8 @@
 // rigid link's moment, let go over two links of pay-out):
 //   rov_dive.yaml, 20-110 s:                    7.6 % rms, 35.7 % peak  ->  0.32 % rms, 0.58 % peak
 //   stiff tether (EI = GJ = 200 N m^2), 8-40 s:  2.8 % rms, 24.6 % peak  ->  0.04 % rms, 0.10 % peak
+// Hauling in (links merged into the winch's link) was smooth already: the same stiff tether hauled in at
+// 1 m/s, 0.013 % rms, 0.083 % peak (the last test).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -26,6 +28,7 @@ namespace {
 struct Ripple {
   double rms = 0.0, peak = 0.0;  // [-] of the moving average
   int links_added = 0;           // within the window
+  int links_removed = 0;         // within the window
   double energy_drift = 0.0;     // the simulator's energyDrift() at the end
   double mass_error = 0.0;       // largest |deployed mass - m' L| [kg] at the samples
 };
@@ -38,13 +41,16 @@ Ripple linePullRipple(CableSimulator& sim, double mass_per_length, double from, 
   std::vector<double> t, pull;
   Ripple out;
   SimulationSnapshot snap;
-  int added_before = -1;
+  int added_before = -1, removed_before = -1;
   while (sim.time() < to + 1.0 + 0.5 * sample) {
     sim.snapshot(snap);
     t.push_back(sim.time());
     pull.push_back(snap.line_pull);
     out.mass_error = std::max(out.mass_error, std::abs(sim.properties().mass.sum() - mass_per_length * sim.deployedLength()));
-    if (added_before < 0 && sim.time() >= from) added_before = sim.linksAdded();
+    if (added_before < 0 && sim.time() >= from) {
+      added_before = sim.linksAdded();
+      removed_before = sim.linksRemoved();
+    }
     for (long i = 0; i < per_sample; ++i) {
       const StepReport r = sim.step();
       if (!r.ok) {
@@ -54,6 +60,7 @@ Ripple linePullRipple(CableSimulator& sim, double mass_per_length, double from, 
     }
   }
   out.links_added = sim.linksAdded() - added_before;
+  out.links_removed = sim.linksRemoved() - removed_before;
   const int half = static_cast<int>(std::lround(1.0 / sample));  // 1 s each side
   double sum = 0.0;
   int count = 0;
@@ -74,7 +81,8 @@ Ripple linePullRipple(CableSimulator& sim, double mass_per_length, double from, 
 
 void report(const char* name, const Ripple& r) {
   std::cout << name << ": line pull " << 100.0 * r.rms << " % rms, " << 100.0 * r.peak
-            << " % peak about its 2 s moving average; " << r.links_added << " links added; energy drift "
+            << " % peak about its 2 s moving average; " << r.links_added << " links added, " << r.links_removed
+            << " removed; energy drift "
             << r.energy_drift << "; mass error " << r.mass_error << " kg" << std::endl;
 }
 
@@ -122,4 +130,30 @@ TEST(WinchLinePull, StiffTetherInACurrentIsSmoothThroughTheLinksAdded) {
   const Ripple r = linePullRipple(sim, 0.6, 8.0, 40.0);
   report("stiff tether in a current, 8-40 s", r);
   expectSmooth(r, 14, kStiffRms, kStiffPeak);
+}
+
+// Hauling in (issue 27 item 1's other half): the same stiff tether from 60 m, hauled in at 1 m/s, a 2 m link
+// merged into the winch's link every 2 s. On rov_dive the haul-in's deviation measured 1.57 % rms and 11.4 %
+// at its peak, but that was the schedule, not the links: it changes the speed every 10 s at 0.2 m/s^2, and
+// the line pull follows the cable's inertia and its tangential drag (266 -> 312 -> 300 N as -0.51 m/s
+// becomes -0.60 m/s); at the links removed in between the line pull steps by 0.5 N of 280 N, and over the
+// windows of steady speed the deviation is 0.063 % rms, 2.9 % peak. Here the speed is steady throughout.
+TEST(WinchLinePull, StiffTetherInACurrentIsSmoothThroughTheLinksRemoved) {
+  const CableParams p = loadConfigString(
+      "cable: {links: 30, length: 60.0, diameter: 0.025, mass_per_length: 0.6,\n"
+      "        stiffness: {model: bending, bending_rigidity: 200.0, torsional_rigidity: 200.0}}\n"
+      "load: {mass: 50.0, volume: 0.02, drag_area: 0.3}\n"
+      "fluid: {current: [0.3, 0.0, 0.0]}\n"
+      "winch: {max_length: 60.0, min_length: 10.0, max_speed: 1.0, max_acceleration: 1.0, schedule: [{time: 0.0, speed: -1.0}]}\n"
+      "initial: {mode: equilibrium}\n"
+      "simulation: {dt: 0.0005}\n");
+  CableSimulator sim(p);
+  const Ripple r = linePullRipple(sim, 0.6, 8.0, 40.0);
+  report("stiff tether in a current hauled in, 8-40 s", r);
+  EXPECT_GE(r.links_removed, 14);
+  EXPECT_LT(r.rms, 1e-3);   // measured 0.013 %: 7.6x
+  EXPECT_LT(r.peak, 5e-3);  // measured 0.083 %: 6x
+  EXPECT_GE(r.energy_drift, 0.0);
+  EXPECT_LT(r.energy_drift, 1e-10);
+  EXPECT_LT(r.mass_error, 1e-9);
 }
