@@ -48,9 +48,7 @@ ChainModel::ChainModel(const CableParams& params, int /*slots built*/)
     attachment_drag_ = attachment_drag_ || (a.drag_area > 0.0 && params.fluid.density > 0.0);
   }
   for (int k = 0; k < n_; ++k) attachment_begin_[k + 1] += attachment_begin_[k];
-  fold_stop_tension_ = p.submerged_mass.cwiseAbs().sum() + std::abs(p.load_submerged_mass);
-  for (const LinkAttachment& a : p.attachments) fold_stop_tension_ += std::abs(a.submerged_mass);
-  fold_stop_tension_ *= p.gravity;
+  fold_stop_tension_ = FoldStop::tensionOf(p);
   has_springs_ = p.stiffness_elevation.any() || p.stiffness_azimuth.any() || p.stiffness_torsion.any() ||
                  p.damping_elevation.any() || p.damping_azimuth.any() || p.damping_torsion.any();
   // An ROV body carries its own mass, weight and drag (rov_body.h): the tip then holds no point load.

@@ -1,9 +1,11 @@
 #include "cable_dynamics/dynamics/elastic_joints.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <unsupported/Eigen/AutoDiff>
 
+#include "cable_dynamics/dynamics/forces/fold_stop.h"
 #include "cable_dynamics/dynamics/joint_geometry.h"
 
 namespace cable_dynamics {
@@ -39,11 +41,16 @@ void bendTwist(const S& te_prev, const S& te, const S& a, const S& t, S& bend_sq
   twist = principalTwist(twist, valueOf(twist));  // as the dynamics' jointGeometry
 }
 
+/// The joint's springs, and its fold stop (forces/fold_stop.h; inactive for joint 1, at the clamp).
 template <typename S>
-S jointEnergy(const S& te_prev, const S& te, const S& a, const S& t, double k_bend, double k_twist) {
+S jointEnergy(const S& te_prev, const S& te, const S& a, const S& t, double k_bend, double k_twist, const FoldStop& stop) {
+  using std::sqrt;
   S bend_squared, twist;
   bendTwist(te_prev, te, a, t, bend_squared, twist);
-  return 0.5 * k_bend * bend_squared + 0.5 * k_twist * twist * twist;
+  S energy = 0.5 * k_bend * bend_squared + 0.5 * k_twist * twist * twist;
+  const double bend = std::sqrt(std::max(0.0, valueOf(bend_squared)));
+  if (stop.engaged(bend)) energy += stop.energyOf(S(sqrt(bend_squared)), bend);
+  return energy;
 }
 
 /// Global indices of the local variables of joint k; -1 where the variable is the fixed base.
@@ -80,13 +87,20 @@ ElasticJoints::ElasticJoints(const LinkProperties& p)
     k_diag_.segment<3>(3 * k) << p.stiffness_elevation(k), p.stiffness_azimuth(k), p.stiffness_torsion(k);
     c_diag_.segment<3>(3 * k) << p.damping_elevation(k), p.damping_azimuth(k), p.damping_torsion(k);
   }
+  // The fold stops between links, as ChainModel::foldStop builds them for the dynamics.
+  stops_.assign(n_, FoldStop{});
+  const double tension = FoldStop::tensionOf(p);
+  for (int k = 1; k < n_ && model_ == StiffnessModel::kBending; ++k) {
+    stops_[k] = FoldStop::between(p.length(k - 1), p.length(k), 2.0 * std::max(p.radius(k - 1), p.radius(k)), tension);
+  }
 }
 
 double ElasticJoints::energy(const Eigen::VectorXd& q) const {
   if (model_ == StiffnessModel::kPaper) return 0.5 * q.dot(k_diag_.cwiseProduct(q));
   double v = 0.0;
   for (int k = 0; k < n_; ++k) {
-    v += jointEnergy(local(q, k, 0), local(q, k, 1), local(q, k, 2), local(q, k, 3), k_diag_(3 * k), k_diag_(3 * k + 2));
+    v += jointEnergy(local(q, k, 0), local(q, k, 1), local(q, k, 2), local(q, k, 3), k_diag_(3 * k), k_diag_(3 * k + 2),
+                     stops_[k]);
   }
   return v;
 }
@@ -102,7 +116,7 @@ void ElasticJoints::force(const Eigen::VectorXd& q, Eigen::VectorXd& out) const 
     localIndices(k, idx);
     Ad1 x[4];
     for (int i = 0; i < 4; ++i) x[i] = Ad1(local(q, k, i), 4, i);
-    const Ad1 v = jointEnergy(x[0], x[1], x[2], x[3], k_diag_(3 * k), k_diag_(3 * k + 2));
+    const Ad1 v = jointEnergy(x[0], x[1], x[2], x[3], k_diag_(3 * k), k_diag_(3 * k + 2), stops_[k]);
     for (int i = 0; i < 4; ++i) {
       if (idx[i] >= 0) out(idx[i]) += v.derivatives()(i);
     }
@@ -125,7 +139,7 @@ void ElasticJoints::stiffness(const Eigen::VectorXd& q, Eigen::MatrixXd& out) co
       outer_seed(i) = Ad1(1.0, Vec4::Zero());
       x[i] = Ad2(Ad1(local(q, k, i), 4, i), outer_seed);
     }
-    const Ad2 v = jointEnergy(x[0], x[1], x[2], x[3], k_diag_(3 * k), k_diag_(3 * k + 2));
+    const Ad2 v = jointEnergy(x[0], x[1], x[2], x[3], k_diag_(3 * k), k_diag_(3 * k + 2), stops_[k]);
     for (int i = 0; i < 4; ++i) {
       for (int j = 0; j < 4; ++j) {
         if (idx[i] >= 0 && idx[j] >= 0) out(idx[i], idx[j]) += v.derivatives()(i).derivatives()(j);

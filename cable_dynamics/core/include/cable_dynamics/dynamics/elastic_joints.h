@@ -3,8 +3,11 @@
 /// \brief Springs and dampers of the fictitious joints: the paper's diagonal K and D on the generalized
 ///        coordinates, or a geometrically consistent bending/twist energy between neighbouring links.
 
+#include <vector>
+
 #include <Eigen/Core>
 
+#include "cable_dynamics/dynamics/forces/fold_stop.h"
 #include "cable_dynamics/params/cable_params.h"
 
 namespace cable_dynamics {
@@ -45,6 +48,7 @@ class ElasticJoints {
   Eigen::VectorXd c_diag_;  ///< (3n) dampers in coordinate order [N m s/rad]
   double clamp_elevation_;  ///< of the base clamp's axis [rad]
   double clamp_azimuth_;    ///< of the base clamp's axis [rad]
+  std::vector<FoldStop> stops_;  ///< (n) joint k's fold stop (bending model, k >= 1; forces/fold_stop.h)
 
   /// Local variable i (te_prev, te, a, t) of joint k, with the clamp standing in for link 0.
   double local(const Eigen::VectorXd& q, int k, int i) const;

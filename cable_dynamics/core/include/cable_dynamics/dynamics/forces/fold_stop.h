@@ -22,12 +22,15 @@
 ///
 /// The bend damper and the twist spring act on an engaged joint as on any other; the mean axis stays
 /// defined because the bend stays below pi. The paper's stiffness model has no stop (its absolute angles
-/// are singular at the vertical already, docs/MODEL.md section 5).
+/// are singular at the vertical already, docs/MODEL.md section 5). The paper formulation's ElasticJoints
+/// has it too, with automatic differentiation (energyOf).
 
 #include <algorithm>
 #include <cmath>
 
 #include <Eigen/Core>
+
+#include "cable_dynamics/params/cable_params.h"
 
 namespace cable_dynamics {
 
@@ -62,10 +65,24 @@ struct FoldStop {
   double share(double bend) const { return std::min((bend - angle) / (M_PI - angle), 1.0 - 1e-12); }
 
   /// V [J]; 0 where it is not engaged.
-  double energy(double bend) const {
-    if (!engaged(bend)) return 0.0;
-    const double s = share(bend), room = M_PI - angle;
-    return stiffness * room * room * (-s - std::log1p(-s));
+  double energy(double bend) const { return energyOf(bend, bend); }
+
+  /// V for a scalar S with automatic differentiation (ElasticJoints), `value` the bend's value [J].
+  template <typename S>
+  S energyOf(const S& bend, double value) const {
+    using std::log;
+    if (!engaged(value)) return S(0.0);
+    const double room = M_PI - angle;
+    const S s = value - angle < (1.0 - 1e-12) * room ? S((bend - angle) / room) : S(1.0 - 1e-12);
+    return stiffness * room * room * (-s - log(1.0 - s));
+  }
+
+  /// The hanging tension that sizes every joint's stop [N]: g times the magnitudes of the submerged masses
+  /// of the links (slots as configured), the attachments and the load.
+  static double tensionOf(const LinkProperties& p) {
+    double submerged = p.submerged_mass.cwiseAbs().sum() + std::abs(p.load_submerged_mass);
+    for (const LinkAttachment& a : p.attachments) submerged += std::abs(a.submerged_mass);
+    return p.gravity * submerged;
   }
 
   /// dV/dbeta [N m].
