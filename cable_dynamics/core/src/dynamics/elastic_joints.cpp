@@ -91,7 +91,7 @@ ElasticJoints::ElasticJoints(const LinkProperties& p)
   stops_.assign(n_, FoldStop{});
   const double tension = FoldStop::tensionOf(p);
   for (int k = 1; k < n_ && model_ == StiffnessModel::kBending; ++k) {
-    stops_[k] = FoldStop::between(p.length(k - 1), p.length(k), 2.0 * std::max(p.radius(k - 1), p.radius(k)), tension);
+    stops_[k] = FoldStop::ofJoint(p, k, tension);
   }
 }
 

@@ -5,7 +5,6 @@
 ///        the winch changes included). Every method is const; live tuning replaces the whole model
 ///        between steps (CableSimulator::retune) and redeploys the data's cable with it.
 
-#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -107,9 +106,7 @@ class ChainModel {
   /// magnitudes of the submerged masses of every slot as configured, its attachments and the load.
   double foldStopTension() const { return fold_stop_tension_; }
   /// The fold stop of joint k (between slots k-1 and k, k >= 1) at the lengths of `p` (a deployment's).
-  FoldStop foldStop(const LinkProperties& p, int k) const {
-    return FoldStop::between(p.length(k - 1), p.length(k), 2.0 * std::max(p.radius(k - 1), p.radius(k)), fold_stop_tension_);
-  }
+  FoldStop foldStop(const LinkProperties& p, int k) const { return FoldStop::ofJoint(p, k, fold_stop_tension_); }
   /// A clamped tip's bend spring and damper (forces/tip_clamp.h; inactive unless load.fixity is clamped).
   TipClamp tipClamp() const { return {nominal_.tip_clamp_stiffness, nominal_.tip_clamp_damping}; }
   /// The seabed and its contact's constants (disabled when the config has no seabed).

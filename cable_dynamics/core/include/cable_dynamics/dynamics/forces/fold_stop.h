@@ -59,6 +59,11 @@ struct FoldStop {
     return s;
   }
 
+  /// The stop of joint k (between links k-1 and k, k >= 1) at the lengths and radii of `p`.
+  static FoldStop ofJoint(const LinkProperties& p, int k, double tension) {
+    return between(p.length(k - 1), p.length(k), 2.0 * std::max(p.radius(k - 1), p.radius(k)), tension);
+  }
+
   bool engaged(double bend) const { return stiffness > 0.0 && bend > angle; }
 
   /// Share s of the room left between the stop and pi, kept below 1 (a bend at pi to round-off).
