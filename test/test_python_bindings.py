@@ -183,6 +183,28 @@ def test_a_chain_on_the_seabed_rests_its_weight_on_it():
     assert s.contact_energy > 0.0
 
 
+def test_static_friction_holds_the_cable_where_the_equilibrium_laid_it():
+    # The same chain on a bottom with friction (mu 0.5): the statics solve without friction (one of the
+    # equilibria the static friction allows) and put each contact point's anchor on its point, so the
+    # snapshot shows every grounded point held and a run from there stays at rest. With breakout 0 (the
+    # regularized law, no anchors) nothing is held.
+    cfg = hanging_config(load_mass=0.0, load_volume=0.0)
+    cfg["load"].update({"mode": "anchored", "motion": {"offset": [14.0, 0.0, 10.0]}})
+    cfg["seabed"] = {"depth": 10.0, "friction": {"axial": 0.5, "lateral": 0.5}}
+    cfg["initial"] = {"mode": "equilibrium"}
+    sim = cable_dynamics.Simulator.from_dict(cfg)
+    start = sim.snapshot()
+    assert start.grounded_length > 1.0
+    assert start.stuck_length == pytest.approx(start.grounded_length, abs=1e-12)
+    sim.step(200)
+    after = sim.snapshot()
+    assert after.stuck_length == pytest.approx(after.grounded_length, abs=1e-12)
+    # at rest: 0.2 s moved the ends by 1.8e-14 m (rounding)
+    assert np.abs(after.link_ends - start.link_ends).max() < 1e-10
+    cfg["seabed"]["friction"]["breakout"] = 0.0
+    assert cable_dynamics.Simulator.from_dict(cfg).snapshot().stuck_length == 0.0
+
+
 # --- stepping: the compound pendulum ----------------------------------------------------------------
 
 def test_single_link_swings_with_the_compound_pendulum_period():

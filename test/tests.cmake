@@ -179,3 +179,7 @@ target_compile_definitions(test_exact_anchor PRIVATE CABLE_CONFIG_DIR="${CMAKE_C
 # Neighbouring links cannot fold through each other (forces/fold_stop.h; issue 27 item 4).
 catkin_add_gtest(test_fold_stop test/test_fold_stop.cpp)
 target_link_libraries(test_fold_stop cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+# Static friction on the seabed: an anchor per contact point (forces/contact.h; issue 27 item 5).
+catkin_add_gtest(test_static_friction test/test_static_friction.cpp)
+target_link_libraries(test_static_friction cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

@@ -73,6 +73,8 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
       .def_readonly("seabed_force", &Snapshot::seabed_force, "(n, 3) the bottom's force on each link [N] (empty without a seabed)")
       .def_readonly("seabed_normal", &Snapshot::seabed_normal, "(n) its normal part [N]")
       .def_readonly("grounded_length", &Snapshot::grounded_length, "cable length on the bottom [m]")
+      .def_readonly("stuck_length", &Snapshot::stuck_length,
+                    "of the grounded length, what the static friction's anchors hold [m] (0 without static friction)")
       .def_readonly("touchdown_arc_length", &Snapshot::touchdown_arc_length,
                     "from the base, where the cable first touches the bottom [m]; -1 while nothing touches")
       .def_readonly("touchdown", &Snapshot::touchdown, "(3) that point [m]")

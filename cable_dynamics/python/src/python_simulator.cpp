@@ -116,6 +116,7 @@ Snapshot PythonSimulator::toPython(const SimulationSnapshot& s) const {
   out.seabed_force = bed.link_force.transpose();
   out.seabed_normal = bed.normal_force;
   out.grounded_length = bed.grounded_length;
+  out.stuck_length = bed.stuck_length;
   out.touchdown_arc_length = bed.touching ? bed.touchdown_arc_length : -1.0;
   out.touchdown = bed.touchdown;
   out.max_penetration = bed.max_penetration;

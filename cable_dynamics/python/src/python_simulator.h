@@ -37,6 +37,7 @@ struct Snapshot {
   Eigen::MatrixX3d seabed_force;       ///< (n x 3) the bottom's force on each link, normal and friction [N]
   Eigen::VectorXd seabed_normal;       ///< (n) its normal part's magnitude [N]
   double grounded_length = 0.0;        ///< cable length in contact [m]
+  double stuck_length = 0.0;           ///< of it, held by the static friction's anchors [m]
   double touchdown_arc_length = -1.0;  ///< from the base, where it first touches [m]; -1 while nothing does
   Eigen::Vector3d touchdown = Eigen::Vector3d::Zero();  ///< that point [m]
   double max_penetration = 0.0;        ///< [m]

@@ -33,6 +33,7 @@ ChainData::ChainData(const ChainModel& model)
   paper_psi.setZero(n);
   // The dense workspace: at construction when the configuration solves densely (no allocation later).
   if (model.formulation() == Formulation::kPaper) dense.allocate(n);
+  if (model.seabedContact().anchored()) anchors.allocate(n, model.seabedContact().points);
 }
 
 }  // namespace cable_dynamics

@@ -15,6 +15,7 @@
 #include "cable_dynamics/dynamics/joint_torques.h"
 #include "cable_dynamics/dynamics/kinematics.h"
 #include "cable_dynamics/dynamics/paper_coordinates.h"
+#include "cable_dynamics/dynamics/seabed_contact.h"
 
 namespace cable_dynamics {
 namespace {
@@ -46,6 +47,12 @@ ChainDynamics::ChainDynamics(const CableParams& params) : model_(params), data_(
 
 void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
   cable_dynamics::followAzimuths(links(), x, data_.azimuths, data_.deployed.firstLink());
+}
+
+int ChainDynamics::placeContactAnchors(const Eigen::VectorXd& x, const EndInputs& ends, bool slide, int winch_links) {
+  if (!data_.anchors.active()) return 0;
+  forwardPass(x, ends, Stage::kKinematics);
+  return cable_dynamics::placeContactAnchors(model_, data_, slide, winch_links);
 }
 
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {

@@ -16,6 +16,34 @@ namespace {
 /// v / (10 sqrt(g' / penetration)) (in water 1 m/s lands within half of a 0.02 m allowance).
 constexpr double kRestingShare = 100.0;
 
+/// Whether a point in contact is held by its anchor: the friction's argument below breakout (|w| < 1).
+bool stuck(const ContactLaw& law, const ContactPlace& place, const Vec3& v) {
+  const Vec3 slip = v - dot(v, place.normal) * place.normal;
+  const Vec3 w = frictionArgument(law, place, slip);
+  return dot(w, w) < 1.0;
+}
+
+/// The anchor `anchor` [m] of a point at `point` [m] on the bed (inward normal `normal`) after a step:
+/// where it was if the point's offset along the bed is within `reach` [m], else `reach` behind the point
+/// along that offset (the slip the Coulomb law allowed). Returns true when it slid.
+bool slideAnchor(const Vec3& point, const Vec3& normal, double reach, double* anchor) {
+  const Vec3 offset = point - Vec3{anchor[0], anchor[1], anchor[2]};
+  const Vec3 along = offset - dot(offset, normal) * normal;
+  const double distance = std::sqrt(dot(along, along));
+  if (distance <= reach) return false;
+  const Vec3 moved = point - (reach / distance) * along;
+  anchor[0] = moved.x;
+  anchor[1] = moved.y;
+  anchor[2] = moved.z;
+  return true;
+}
+
+void anchorAt(const Vec3& point, double* anchor) {
+  anchor[0] = point.x;
+  anchor[1] = point.y;
+  anchor[2] = point.z;
+}
+
 }  // namespace
 
 SeabedContactConstants makeSeabedContact(const CableParams& params, const LinkProperties& p) {
@@ -38,6 +66,7 @@ SeabedContactConstants makeSeabedContact(const CableParams& params, const LinkPr
   c.friction_axial = s.friction_axial;
   c.friction_lateral = s.friction_lateral;
   c.friction_velocity = s.friction_velocity;
+  c.friction_breakout = s.friction_breakout;
   c.damping.assign(p.n, 0.0);
   for (int k = 0; k < p.n; ++k) {
     const double per_length = p.length(k) > 0.0 ? p.mass(k) / p.length(k) : params.mass_per_length;
@@ -60,7 +89,8 @@ namespace {
 /// first moment, returns the dissipated power [W]. The hot path's case.
 CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactConstants& c, const ContactLaw& law, double l,
                                                           const Vec3& base, const Vec3& velocity, const Vec3& axis,
-                                                          const Vec3& rate, Vec3& force, Vec3& moment) {
+                                                          const Vec3& rate, const double* anchors, Vec3& force,
+                                                          Vec3& moment) {
   const double depth = c.bed.shallowest();
   ContactPlace place;
   place.has_along = alongTheBed(axis, place.normal, place.along);
@@ -69,6 +99,7 @@ CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactCon
     const double s = c.node[j] * l;
     place.delta = base.z + s * axis.z - depth;
     if (place.delta <= 0.0) continue;
+    if (anchors) place.offset = base + s * axis - Vec3{anchors[3 * j], anchors[3 * j + 1], anchors[3 * j + 2]};
     PointContact contact;
     contactForce(law, place, velocity + s * rate, contact);
     force = force + contact.force;
@@ -109,8 +140,9 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
       const ContactLaw law = c.linkLaw(k, share);
       const Vec3 base = block.base_pos[i], velocity = block.base_vel[i], axis = block.u[i], rate = block.axis_rate[i];
       Vec3 force{0.0, 0.0, 0.0}, moment{0.0, 0.0, 0.0};
+      const double* anchors = data.anchors.of(k);
       if (flat_kernel) {
-        dissipation += flatLinkContact(c, law, l, base, velocity, axis, rate, force, moment);
+        dissipation += flatLinkContact(c, law, l, base, velocity, axis, rate, anchors, force, moment);
         LinkBlock& target = links->block(b);
         target.force.set(i, target.force[i] + force);
         target.moment.set(i, target.moment[i] + moment);
@@ -123,6 +155,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
         ContactPlace place;
         PointContact contact;
         const bool touching = contactPlace(c.bed, point, axis, place);
+        if (touching && anchors) place.offset = point - Vec3{anchors[3 * j], anchors[3 * j + 1], anchors[3 * j + 2]};
         if (touching) contactForce(law, place, velocity + s * rate, contact);
         if (report && !report->touching) {
           const double penetration = touching ? place.delta : Seabed::penetration(c.bed.probe(point.x, point.y), point.z);
@@ -143,6 +176,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
         if (report) {
           normal -= dot(contact.force, place.normal);  // the friction is tangential
           report->grounded_length += share;
+          if (anchors && stuck(law, place, velocity + s * rate)) report->stuck_length += share;
           report->max_penetration = std::max(report->max_penetration, contact.penetration);
           report->touching = true;
         }
@@ -163,6 +197,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
     ContactPlace place;
     PointContact contact;
     if (contactPlace(c.bed, toVec3(data.tip_position), {0.0, 0.0, 0.0}, place)) {
+      if (data.anchors.active()) place.offset = toVec3(Eigen::Vector3d(data.tip_position - data.anchors.load));
       contactForce(c.loadLaw(), place, toVec3(data.tip_velocity), contact);
       if (load_external) *load_external += toEigen(contact.force);
       dissipation += contact.dissipation;
@@ -181,6 +216,44 @@ CABLE_HOT_PATH void addSeabedContact(const ChainModel& model, ChainData& data) {
   data.contact_dissipation = contactPass(model, data, &data.links, &data.load_external, nullptr);
 }
 
+int placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, int winch_links) {
+  if (!data.anchors.active()) return 0;
+  const SeabedContactConstants& c = model.seabedContact();
+  const int n = model.links(), first = data.deployed.firstLink();
+  int slid = 0;
+  for (int k = 0; k < n; ++k) {
+    const double l = data.deployed.get(&LinkConstants::length, k);
+    const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), u = data.links.get(&LinkBlock::u, k);
+    // A link on the drum or wholly above the bed: no anchor (nothing to hold; one that touches down within
+    // the next step is held from where it touched at the step after).
+    const bool was_placed = data.anchors.placed[k];
+    data.anchors.placed[k] = k >= first && l > 0.0 && std::max(base.z(), base.z() + l * u.z()) > c.bed.shallowest();
+    if (!data.anchors.placed[k]) continue;
+    // The winch's link: its points move along the cable as it is paid out, so its anchors stay on them.
+    const bool holds = slide && was_placed && !(model.hasWinch() && k < first + winch_links);
+    for (int j = 0; j < c.points; ++j) {
+      const Vec3 point = toVec3(Eigen::Vector3d(base + (c.node[j] * l) * u));
+      double* anchor = data.anchors.link.col(k * c.points + j).data();
+      ContactPlace place;
+      if (holds && contactPlace(c.bed, point, toVec3(u), place)) {
+        slid += slideAnchor(point, place.normal, c.friction_breakout, anchor) ? 1 : 0;
+      } else {
+        anchorAt(point, anchor);  // off the bed (or a new state): the anchor goes with the point
+      }
+    }
+  }
+  if (c.load_contact) {
+    const Vec3 point = toVec3(data.tip_position);
+    ContactPlace place;
+    if (slide && contactPlace(c.bed, point, {0.0, 0.0, 0.0}, place)) {
+      slid += slideAnchor(point, place.normal, c.friction_breakout, data.anchors.load.data()) ? 1 : 0;
+    } else {
+      data.anchors.load = data.tip_position;
+    }
+  }
+  return slid;
+}
+
 void reportSeabedContact(const ChainModel& model, const ChainData& data, SeabedReport& report) {
   const int n = model.links();
   // Reset in place: the arrays keep their storage from the last report (one allocation, at the first).
@@ -192,6 +265,7 @@ void reportSeabedContact(const ChainModel& model, const ChainData& data, SeabedR
   report.touchdown_arc_length = 0.0;
   report.touchdown.setZero();
   report.max_penetration = 0.0;
+  report.stuck_length = 0.0;
   contactPass(model, data, nullptr, nullptr, &report);
   report.energy = seabedContactEnergy(model, data);
 }

@@ -206,6 +206,7 @@ void checkSeabed(const SeabedParams& s) {
   check("seabed.friction.axial", s.friction_axial, ranges::kFriction);
   check("seabed.friction.lateral", s.friction_lateral, ranges::kFriction);
   check("seabed.friction.velocity", s.friction_velocity, ranges::kFrictionVelocity);
+  check("seabed.friction.breakout", s.friction_breakout, ranges::kFrictionBreakout);
   check("seabed.contact_points", s.contact_points, ranges::kContactPoints);
 }
 

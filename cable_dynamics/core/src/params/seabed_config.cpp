@@ -85,6 +85,7 @@ void parseSeabed(ConfigSection seabed, const std::string& base_dir, CableParams&
   s.friction_axial = friction.number("axial", 0.0, ranges::kFriction);
   s.friction_lateral = friction.number("lateral", 0.0, ranges::kFriction);
   s.friction_velocity = friction.number("velocity", 0.01, ranges::kFrictionVelocity);
+  s.friction_breakout = friction.number("breakout", 0.005, ranges::kFrictionBreakout);
   friction.rejectUnknownKeys();
   s.contact_points = seabed.integer("contact_points", 4, ranges::kContactPoints);
   seabed.rejectUnknownKeys();

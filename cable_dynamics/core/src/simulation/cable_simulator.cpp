@@ -178,6 +178,8 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   // energy bookkeeping, as after setPaperState().
   dynamics_.followAzimuths(x_);
   dynamics_.releaseJoints();  // the equilibrium holds no joint
+  // The frictionless equilibrium is one the static friction allows: its anchors where the points rest.
+  dynamics_.placeContactAnchors(x_, ends_.at(time_), false);
   start_balance_known_ = false;
   drift_reference_known_ = false;
   largest_scale_ = energy_drift_ = energy_rise_ = 0.0;
@@ -255,6 +257,8 @@ void CableSimulator::finishWinchStep() {
   x_(StateLayout::dissipated(links())) += energy_before - energy_after;
   regrid_energy_ += energy_before - energy_after;
   dynamics_.followAzimuths(x_);
+  // The split or merged link's anchors afresh (the kinematics are the new state's: the energy above).
+  dynamics_.slideContactAnchors(2);
   start_balance_known_ = false;
   scheme_->forget();
 }
@@ -289,6 +293,7 @@ void CableSimulator::setState(const Eigen::VectorXd& x) {
   if (!x.allFinite()) throw std::invalid_argument("state has a non-finite value");
   x_ = x;
   dynamics_.followAzimuths(x_);
+  dynamics_.placeContactAnchors(x_, ends_.at(time_), false);
   watchStretches(false);  // the new state's slack links, without counting a snap
   start_balance_known_ = false;
   drift_reference_known_ = false;
@@ -323,6 +328,7 @@ void CableSimulator::setPaperState(const Eigen::VectorXd& q, const Eigen::Vector
   Eigen::Vector3d tip = position;
   for (int k = 0; k < links(); ++k) tip += properties().length(k) * x_.segment<3>(StateLayout::axis(k));
   ends_.setInitialTip(tip);
+  dynamics_.placeContactAnchors(x_, ends_.at(time_), false);
 }
 
 EnergyBalance CableSimulator::balanceNow() {
@@ -412,6 +418,7 @@ StepReport CableSimulator::step() {
       if (pieces > 1) ++retried_steps_;
       time_ = t0 + dt_;  // no drift from summing the pieces
       dynamics_.followAzimuths(x_);
+      dynamics_.slideContactAnchors();  // at the kinematics advance() left: the new state's
       if (hasWinch()) {
         dynamics_.dropReleasedHolds(ends_.at(time_));
         finishWinchStep();

@@ -351,8 +351,9 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
   }
   if (params.seabed.enabled) {
     // The seabed's normal spring-damper on each link's mass per length (omega, damping ratio zeta); and
-    // the friction's viscous regime below the regularization speed, mu w' / v_reg per unit mass, with
-    // w' the weight per length that presses the link down (its own).
+    // the friction's damper below the regularization speed, mu w' / v_reg per unit mass, with w' the
+    // weight per length that presses the link down (its own), and with static friction its anchor
+    // spring mu w' / x_b per unit mass.
     const SeabedContactConstants c = makeSeabedContact(params, p);
     const double zeta = params.seabed.damping_ratio;
     for (int k = 0; k < n; ++k) {
@@ -363,9 +364,11 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
       const double omega = std::sqrt(c.stiffness / across);
       stiffest.consider(2.0 * zeta * omega, omega * omega, "the seabed's normal spring under link " + link);
       const double pressing = std::max(p.gravity * p.submerged_mass(k) / l, 0.0);
-      stiffest.decay(c.friction_axial * pressing / (c.friction_velocity * mass), "the seabed's axial friction on link " + link);
-      stiffest.decay(c.friction_lateral * pressing / (c.friction_velocity * across),
-                     "the seabed's lateral friction on link " + link);
+      const double anchor = c.friction_breakout > 0.0 ? 1.0 / c.friction_breakout : 0.0;  // [1/m]
+      stiffest.consider(c.friction_axial * pressing / (c.friction_velocity * mass), c.friction_axial * pressing * anchor / mass,
+                        "the seabed's axial friction on link " + link);
+      stiffest.consider(c.friction_lateral * pressing / (c.friction_velocity * across),
+                        c.friction_lateral * pressing * anchor / across, "the seabed's lateral friction on link " + link);
     }
   }
   StableStep s;

@@ -13,6 +13,7 @@
 #include "cable_dynamics/dynamics/chain_deployment.h"
 #include "cable_dynamics/dynamics/chain_model.h"
 #include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/forces/contact.h"
 #include "cable_dynamics/dynamics/link_block.h"
 
 namespace cable_dynamics {
@@ -85,7 +86,11 @@ struct ChainData {
 
   // Powers [W]: of the drag, of the added-mass force, of the moving base and the coupling.
   double drag_power = 0.0, added_mass_power = 0.0, input_power = 0.0;
-  double contact_dissipation = 0.0;  ///< power the seabed's dampers and friction take out, >= 0 [W]
+  /// Power the seabed's dampers and friction take out [W]: >= 0, but for a sticking point's anchor spring
+  /// giving back what it stored.
+  double contact_dissipation = 0.0;
+  /// The seabed friction's anchors (static friction; seabed_contact.h), moved only between steps.
+  ContactAnchors anchors;
 
   // The paper springs' scratch: paper coordinates, rates (3n) [rad, rad/s], absolute azimuths (n) [rad].
   Eigen::VectorXd paper_q, paper_qd, paper_psi;

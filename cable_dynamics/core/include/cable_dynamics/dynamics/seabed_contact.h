@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// \brief Contact of the cable and its load with the seabed (docs/MODEL.md section 10): a normal
-///        spring-damper per unit length at points along each link, regularized Coulomb friction with
-///        separate axial and lateral coefficients, its potential energy and its dissipation.
+///        spring-damper per unit length at points along each link, Coulomb friction with static friction
+///        (an anchor per contact point) and separate axial and lateral coefficients, its potential energy
+///        and its dissipation.
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,7 @@ struct SeabedContactConstants {
   double allowed_penetration = 0.0; ///< what a run must stay within (seabed.penetration) [m]
   double friction_axial = 0.0, friction_lateral = 0.0;  ///< Coulomb coefficients [-]
   double friction_velocity = 0.01;  ///< regularization speed [m/s]
+  double friction_breakout = 0.0;   ///< the anchors' reach x_b [m]; 0: no static friction
   std::vector<double> damping;      ///< (n) c = 2 zeta sqrt(k (m' + m_a')) of each slot's section [N s/m^2]
   // The load, a point (load modes free and anchored; an attached ROV's own contact is its simulator's).
   bool load_contact = false;
@@ -40,15 +42,18 @@ struct SeabedContactConstants {
   double load_rest = 1.0;           ///< W / k [m]
 
   bool enabled() const { return bed.enabled(); }
+  /// Static friction: each contact point has an anchor (ChainData::anchors).
+  bool anchored() const { return enabled() && friction_breakout > 0.0 && (friction_axial > 0.0 || friction_lateral > 0.0); }
   /// The law of a contact point of slot k standing for `share` metres of it, its spring scaled by
   /// `spring_scale` (the statics' continuation; 1 otherwise).
   ContactLaw linkLaw(int k, double share, double spring_scale = 1.0) const {
     return {share * (spring_scale * stiffness), share * damping[k], rest_penetration, friction_axial, friction_lateral,
-            friction_velocity};
+            friction_velocity, friction_breakout};
   }
   /// The load's law (a point: isotropic friction).
   ContactLaw loadLaw(double spring_scale = 1.0) const {
-    return {spring_scale * load_stiffness, load_damping, load_rest, friction_axial, friction_lateral, friction_velocity};
+    return {spring_scale * load_stiffness, load_damping, load_rest, friction_axial, friction_lateral, friction_velocity,
+            friction_breakout};
   }
 };
 
@@ -66,6 +71,16 @@ EIGEN_ALWAYS_INLINE bool contactPlace(const Seabed& bed, const Vec3& p, const Ve
   return true;
 }
 
+/// Places the friction's anchors (ChainData::anchors; nothing without static friction) at the kinematics in
+/// `data`. `slide` false: every anchor at its point (no friction force from an offset: a new state, the
+/// statics' equilibrium). `slide` true, after each accepted step: an anchor beyond its reach x_b from its point
+/// (along the bed) slides to x_b behind it, the Coulomb law's slip; a point off the bed takes its anchor
+/// with it; and the winch's link, whose points move along the cable as its length changes, keeps its
+/// anchors on its points (regularized friction only), as do the `winch_links` first deployed links in all
+/// (2 after the winch added or removed a link: the link it split or merged too). Returns the contact
+/// points that slid [-]. O(n).
+int placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, int winch_links = 1);
+
 /// What the outputs show of the contact at one state (paper frame).
 struct SeabedReport {
   Eigen::Matrix3Xd link_force;  ///< (3 x n) the seabed's force on each link, normal and friction [N]
@@ -79,6 +94,9 @@ struct SeabedReport {
   Eigen::Vector3d touchdown = Eigen::Vector3d::Zero();  ///< that point, on the link's axis [m]
   double max_penetration = 0.0;  ///< largest, cable and load [m]
   double energy = 0.0;           ///< the springs' potential energy [J]
+  /// Static friction: the grounded cable whose anchors hold it (offset below x_b and no faster than the
+  /// regularization speed) [m]; 0 without static friction.
+  double stuck_length = 0.0;
 };
 
 /// Adds the seabed's forces to each link's force and first moment and to the load's external force,

@@ -306,7 +306,10 @@ struct SeabedParams {
   double damping_ratio = 0.5;      ///< of each link's normal mode on the spring, m' + m_a' per length [-]
   double friction_axial = 0.0;     ///< Coulomb coefficient along the cable [-]
   double friction_lateral = 0.0;   ///< across it [-]
-  double friction_velocity = 0.01; ///< regularization: viscous below this slip speed [m/s]
+  double friction_velocity = 0.01; ///< regularization: the anchor's damper mu N / v_r; without anchors viscous below it [m/s]
+  /// Static friction: how far a point moves from its anchor on the bed before it slides, x_b [m]; 0: none
+  /// (regularized Coulomb, which creeps on a slope). Default 5 mm.
+  double friction_breakout = 0.005;
   int contact_points = 4;          ///< points per link at which the contact is evaluated (midpoint rule)
 };
 

@@ -109,6 +109,7 @@ constexpr NumberRange kSeabedStiffness{0.0, 1e12, false, "N/m^2 (0: from the pen
 constexpr NumberRange kDampingRatio{0.0, 10.0, false, ""};
 constexpr NumberRange kFriction{0.0, 10.0, false, ""};
 constexpr NumberRange kFrictionVelocity{0.0, 10.0, true, "m/s"};
+constexpr NumberRange kFrictionBreakout{0.0, 1.0, false, "m"};
 constexpr IntegerRange kContactPoints{1, 16};
 
 // initial

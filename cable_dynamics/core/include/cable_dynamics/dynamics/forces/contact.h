@@ -11,13 +11,21 @@
 /// with the bed's inward normal n, moving at v: a normal spring-damper
 ///   N = max(0, share k delta + share c ramp delta'),  ramp = min(1, delta / rest),  delta' = v . n,
 /// (the damper ramps in over the resting penetration, so that the force is continuous at touchdown, and
-/// the bed only pushes), and regularized Coulomb friction on the slip s = v - delta' n,
-///   f = -N / max(|s|, v_r) (mu_a (s.a) a + mu_l (s - (s.a) a)),
+/// the bed only pushes), and Coulomb friction with static friction: on the slip s = v - delta' n and the
+/// point's tangential offset d from its anchor on the bed (d = P (p - anchor), P = I - n n^T),
+///   w = d / x_b + s / v_r,   f = -N / max(|w|, 1) (mu_a (w.a) a + mu_l (w - (w.a) a)),
 /// with a the unit direction of the link's axis along the bed (isotropic at mu_l where there is none: the
-/// load, a link standing on end). The force on the point is -N n + f.
+/// load, a link standing on end). The force on the point is -N n + f. Below breakout (|w| < 1) the anchor
+/// holds the point with a spring mu N / x_b and a damper mu N / v_r: it sticks; at |w| = 1 the friction is
+/// mu N, Coulomb's, and the anchor slides after the step (seabed_contact.h, placeContactAnchors), keeping
+/// |d| <= x_b. This is the anchor-spring ("bristle") model OrcaFlex's seabed friction uses. With no anchor
+/// (x_b = 0: seabed.friction.breakout 0) w = s / v_r and the law is the regularized Coulomb friction
+///   f = -N / max(|s|, v_r) (mu_a (s.a) a + mu_l (s - (s.a) a)),
+/// which creeps at v_r tan(slope) / mu on any slope.
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -33,6 +41,7 @@ struct ContactLaw {
   double rest = 1.0;       ///< the damper's ramp length [m]
   double friction_axial = 0.0, friction_lateral = 0.0;  ///< Coulomb coefficients [-]
   double friction_velocity = 0.01;  ///< regularization speed v_r [m/s]
+  double friction_breakout = 0.0;   ///< x_b, the anchor's reach before the point slides [m]; 0: no anchor
 
   bool hasFriction() const { return friction_axial > 0.0 || friction_lateral > 0.0; }
 };
@@ -44,6 +53,28 @@ struct ContactPlace {
   Vec3 normal{0.0, 0.0, 1.0};
   Vec3 along{0.0, 0.0, 0.0};
   bool has_along = false;
+  /// The point less its friction anchor (p - anchor) [m]; zero without static friction.
+  Vec3 offset{0.0, 0.0, 0.0};
+};
+
+/// The friction's anchors, one per contact point (static friction; forces/contact.h): where each point's
+/// anchor spring is fixed on the bed, moved only between steps (placeContactAnchors, seabed_contact.h).
+struct ContactAnchors {
+  Eigen::Matrix3Xd link;  ///< (3 x n K) anchor of point j of link k in column k K + j, paper frame [m]
+  /// (n) whether link k's anchors are placed; not (a link wholly above the bed at the last placing): its
+  /// points have no offset, as if each anchor were on its point.
+  std::vector<char> placed;
+  Eigen::Vector3d load = Eigen::Vector3d::Zero();  ///< the load's [m]
+  int points = 0;         ///< K, contact points per link
+
+  bool active() const { return points > 0; }
+  void allocate(int links, int per_link) {
+    points = per_link;
+    link.setZero(3, links * per_link);
+    placed.assign(links, 0);
+  }
+  /// Link k's K anchors (3 K, point after point), or null where it has none placed.
+  const double* of(int k) const { return points > 0 && placed[k] ? link.col(k * points).data() : nullptr; }
 };
 
 /// The unit direction along the bed (normal n) of an axis [-]; false when the axis is (nearly) normal to it.
@@ -53,6 +84,17 @@ EIGEN_ALWAYS_INLINE bool alongTheBed(const Vec3& axis, const Vec3& n, Vec3& alon
   if (squared <= 1e-12) return false;
   along = (1.0 / std::sqrt(squared)) * projected;
   return true;
+}
+
+/// The friction's dimensionless argument w = d / x_b + s / v_r (forces/contact.h's law) at slip s [m/s],
+/// with d the tangential part of place.offset; s / v_r alone without an anchor (x_b = 0).
+EIGEN_ALWAYS_INLINE Vec3 frictionArgument(const ContactLaw& law, const ContactPlace& place, const Vec3& slip) {
+  Vec3 w = (1.0 / law.friction_velocity) * slip;
+  if (law.friction_breakout > 0.0) {
+    const Vec3 d = place.offset - dot(place.offset, place.normal) * place.normal;
+    w = w + (1.0 / law.friction_breakout) * d;
+  }
+  return w;
 }
 
 /// One contact point's force [N] (paper frame) and the power it dissipates [W] (>= 0: the damper and
@@ -82,16 +124,19 @@ EIGEN_ALWAYS_INLINE void contactForce(const ContactLaw& law, const ContactPlace&
   double dissipation = (normal - spring) * rate;
   if (normal > 0.0 && law.hasFriction()) {
     const Vec3 slip = v - rate * n;  // in the bed's tangent plane
-    // Coulomb above the regularization speed, viscous below it (continuous; zero at rest).
-    const double scale = normal / std::max(std::sqrt(dot(slip, slip)), law.friction_velocity);
+    const Vec3 w = frictionArgument(law, place, slip);
+    // Coulomb at and beyond breakout, a spring and damper to the anchor below it (continuous).
+    const double scale = normal / std::max(std::sqrt(dot(w, w)), 1.0);
     Vec3 friction;
     if (place.has_along) {
-      const Vec3 axial = dot(slip, place.along) * place.along;
-      friction = -scale * (law.friction_axial * axial + law.friction_lateral * (slip - axial));
+      const Vec3 axial = dot(w, place.along) * place.along;
+      friction = -scale * (law.friction_axial * axial + law.friction_lateral * (w - axial));
     } else {
-      friction = -(scale * law.friction_lateral) * slip;
+      friction = -(scale * law.friction_lateral) * w;
     }
     force = force + friction;
+    // The friction's power: what it takes out sliding; while the point sticks its anchor spring gives back
+    // what it stored, so this can be negative for a while (the balance integrates it either way).
     dissipation -= dot(friction, slip);
   }
   out.force = force;
@@ -103,9 +148,10 @@ EIGEN_ALWAYS_INLINE void contactForce(const ContactLaw& law, const ContactPlace&
 inline double contactEnergy(const ContactLaw& law, double delta) { return 0.5 * law.stiffness * delta * delta; }
 
 /// The law's Jacobian at a point in contact moving at v: the stiffness -dF/dx ~ share k n n^T (the bed's
-/// curvature and the damper's ramp left out) and the damping -dF/dv ~ share c ramp n n^T plus the
-/// friction's secant N / max(|s|, v_r) times its coefficients over the tangent plane (the regularized
-/// viscous band, the stiff part, exactly; above it the secant, not the tangent). Both are exact where the
+/// curvature and the damper's ramp left out) plus the friction's anchor spring, and the damping
+/// -dF/dv ~ share c ramp n n^T plus the friction's damper: the secant N / max(|w|, 1) times its
+/// coefficients over the tangent plane, over x_b and v_r (below breakout, the stiff part, exactly; beyond
+/// it the secant, not the tangent). Both are exact where the
 /// point does not slip, the ramp is full (delta >= rest) and the bed is flat (test_force_modules).
 /// An approximation elsewhere is what the implicit step's W-method allows: it costs no order.
 inline void contactJacobian(const ContactLaw& law, const ContactPlace& place, const Eigen::Vector3d& v,
@@ -117,20 +163,26 @@ inline void contactJacobian(const ContactLaw& law, const ContactPlace& place, co
   stiffness = law.stiffness * nn;
   damping = (law.damping * ramp) * nn;
   if (normal > 0.0 && law.hasFriction()) {
-    const Eigen::Vector3d slip = v - rate * n;
-    const double scale = normal / std::max(slip.norm(), law.friction_velocity);
+    const Vec3 w = frictionArgument(law, place, toVec3(Eigen::Vector3d(v - rate * n)));
+    // The secant N / max(|w|, 1) times the coefficients over the tangent plane, per unit of w; w has
+    // 1 / v_r per unit of slip speed and 1 / x_b per unit of offset from the anchor.
+    const double scale = normal / std::max(std::sqrt(dot(w, w)), 1.0);
     const Eigen::Matrix3d tangent = Eigen::Matrix3d::Identity() - nn;
+    Eigen::Matrix3d coefficients;
     if (place.has_along) {
       const Eigen::Vector3d a = toEigen(place.along);
       const Eigen::Matrix3d aa = a * a.transpose();
-      damping += scale * (law.friction_axial * aa + law.friction_lateral * (tangent - aa));
+      coefficients = scale * (law.friction_axial * aa + law.friction_lateral * (tangent - aa));
     } else {
-      damping += (scale * law.friction_lateral) * tangent;
+      coefficients = (scale * law.friction_lateral) * tangent;
     }
+    damping += (1.0 / law.friction_velocity) * coefficients;
+    if (law.friction_breakout > 0.0) stiffness += (1.0 / law.friction_breakout) * coefficients;
   }
 }
 
-/// The law at rest (v = 0: no damper, no friction), for the statics: the spring's force -share k delta n [N].
+/// The law at rest (v = 0: no damper; no friction: the statics solve the equilibrium without it, one of
+/// the equilibria the friction allows, and the anchors are then placed there), for the statics: the spring's force -share k delta n [N].
 inline Eigen::Vector3d contactForceAtRest(const ContactLaw& law, const ContactPlace& place) {
   return -(law.stiffness * place.delta) * toEigen(place.normal);
 }
