@@ -20,7 +20,7 @@ add_rostest(test/scene.test DEPENDENCIES cable_dynamics_node)
 add_rostest(test/rov_client.test DEPENDENCIES cable_dynamics_node cable_dynamics_python)
 add_rostest(test/body_mode.test DEPENDENCIES cable_dynamics_node)
 foreach(script test_bad_config.py test_sim_time.py test_log_flood.py test_launch_file.py test_catch_up.py
-    test_scene.py test_seabed_node.py test_rov_client.py test_body_mode_node.py)
+    test_scene.py test_seabed_node.py test_rov_client.py test_body_mode_node.py test_fuzz_commands.py)
   execute_process(COMMAND ${CMAKE_COMMAND} -E create_symlink ${CMAKE_CURRENT_SOURCE_DIR}/test/node/${script}
     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${script})
 endforeach()
@@ -46,6 +46,8 @@ add_rostest_gtest(test_fuzz_inputs test/fuzz_inputs.test test/node/test_fuzz_inp
 target_include_directories(test_fuzz_inputs PRIVATE ${EIGEN3_INCLUDE_DIR} ${catkin_INCLUDE_DIRS} ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
 target_link_libraries(test_fuzz_inputs ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 add_dependencies(test_fuzz_inputs cable_msgs_generate_messages_cpp cable_dynamics_node)
+# Issue 27: hostile commands (winch speed and length, equilibrium resets, live tuning), every refusal counted.
+add_rostest(test/fuzz_commands.test DEPENDENCIES cable_dynamics_node)
 
 # The winch (pay out on winch/speed, haul in with winch/set_length, outputs for the deployed links only,
 # the guards), and a node without a winch refusing both.

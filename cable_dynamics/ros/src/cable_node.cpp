@@ -152,7 +152,8 @@ bool CableNode::currentTopicActive() const {
 
 TunableValues CableNode::applyTuning(const TunableValues& wanted, unsigned levels) {
   // Each part on its own: one refused value does not hold back the others of the same request.
-  const auto refused = [](const char* part, const std::string& why) {
+  const auto refused = [this](const char* part, const std::string& why) {
+    ++status_.refused_commands;
     ROS_WARN_STREAM("cable_dynamics: tuning: " << part << " refused, the old value stays: " << why);
   };
   if (levels & kTuneCurrent) {
@@ -339,6 +340,7 @@ bool CableNode::onSetWinchLength(cable_msgs::SetWinchLength::Request& req,
                                  cable_msgs::SetWinchLength::Response& res) {
   res.deployed_length = sim_->deployedLength();
   if (!checkWinchLength(req.length, params_.winch, res.message)) {
+    ++status_.refused_commands;
     res.success = false;
     ROS_WARN_STREAM_THROTTLE(kLogPeriod, "cable_dynamics: winch/set_length: " << res.message);
     return true;
@@ -518,6 +520,7 @@ void CableNode::publishOutputs(const ros::Time& stamp) {
 
 bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Response& res) {
   if (!checkResetRequest(req.positions, req.velocities, params_.links, names_, res.message, params_.drumSlots())) {
+    ++status_.refused_commands;
     res.success = false;
     return true;
   }
@@ -535,6 +538,7 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
       sim_->setPaperState(q, qd);
     }
   } catch (const std::invalid_argument& e) {
+    ++status_.refused_commands;
     res.success = false;
     res.message = e.what();
     return true;
@@ -560,6 +564,7 @@ bool CableNode::onResetToEquilibrium(cable_msgs::ResetToEquilibrium::Request&,
   res.iterations = static_cast<uint32_t>(s.iterations);
   res.residual = s.residual;
   if (!s.converged) {
+    ++status_.refused_commands;
     res.message = s.message;
     ROS_WARN_STREAM("cable_dynamics: reset_to_equilibrium refused: " << s.message);
     return true;

@@ -353,6 +353,7 @@ void fillCableState(const OutputSource& source, const NodeStatus& status, const 
   msg.received_inputs = status.received;
   msg.rejected_inputs = status.rejected;
   msg.stale_inputs = status.stale;
+  msg.refused_commands = status.refused_commands;
   msg.diverged_steps = status.diverged;
   msg.retried_steps = status.retried;
   const SeabedReport& bed = c.seabed;

@@ -97,6 +97,7 @@ struct NodeStatus {
   bool diverged_recently = false;  ///< a step diverged since the last diagnostics
   bool dropped_recently = false;   ///< simulated time was dropped since the last diagnostics
   unsigned received = 0, rejected = 0, stale = 0, diverged = 0, retried = 0;
+  unsigned refused_commands = 0;  ///< service requests and tuning parts refused since start
   WinchStatus winch;
   /// Axial elasticity (cable.axial_stiffness): the slack links now, the snaps and the largest tension
   /// since the last reset (from the snapshot: CableSimulator::snaps, largestTension).
