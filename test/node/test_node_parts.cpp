@@ -277,6 +277,35 @@ TEST(CycleStepper, StopsAtItsWallDeadlineWithinFourSteps) {
   EXPECT_FALSE(early.diverged);
 }
 
+// A step that diverges even in substeps: the cycle reports it, recovers the simulator (its initial shape)
+// and stops, with the inputs (here a current) carried on. The node's reset no longer
+// lets such a state in (it tries the first step on a copy: test_hostile_inputs), so the state is set here
+// directly: every rate 1000 rad/s on node_test.yaml's cable, which diverges in its first step.
+TEST(CycleStepper, ADivergedStepIsCountedAndTheSimulatorRecoveredWithItsInputs) {
+  CableSimulator sim(cable_dynamics::loadConfigString(
+      "cable: {links: 6, length: 12.0, diameter: 0.03, mass_per_length: 1.0}\n"
+      "load: {mass: 5.0, volume: 0.002}\n"
+      "simulation: {dt: 0.002}\n"));
+  sim.setCurrent(Eigen::Vector3d(1.5, 0.0, 0.0));
+  const CycleReport calm = stepCycle(sim, 500, ros::WallTime::now() + ros::WallDuration(3600.0));
+  ASSERT_FALSE(calm.diverged);
+  sim.setPaperState(Eigen::VectorXd::Zero(18), Eigen::VectorXd::Constant(18, 1e3));
+  EXPECT_FALSE(sim.trialStep().ok);  // what the node's reset now refuses
+  sim.setPaperState(Eigen::VectorXd::Zero(18), Eigen::VectorXd::Constant(18, 1e3));  // (the state restarts at t = 0)
+  const CycleReport violent = stepCycle(sim, 10, ros::WallTime::now() + ros::WallDuration(3600.0));
+  EXPECT_TRUE(violent.diverged);
+  EXPECT_EQ(violent.steps, 0);
+  EXPECT_NE(violent.message.find("diverged"), std::string::npos) << violent.message;
+  // Recovered: the initial shape at rest, stepping on in the current it had.
+  SimulationSnapshot s;
+  sim.snapshot(s);
+  EXPECT_LT(s.chain.kinetic_energy, 1.0);
+  const CycleReport after = stepCycle(sim, 500, ros::WallTime::now() + ros::WallDuration(3600.0));
+  EXPECT_FALSE(after.diverged);
+  sim.snapshot(s);
+  EXPECT_GT(s.chain.ends.col(6).x(), 0.5) << "the current was dropped by the recovery";
+}
+
 TEST(RateWindow, RealTimeFactorIsSimulatedOverWallSeconds) {
   RateWindow w(1.0);
   const ros::WallTime t0(100.0);

@@ -525,24 +525,38 @@ bool CableNode::onReset(cable_msgs::Reset::Request& req, cable_msgs::Reset::Resp
     return true;
   }
   try {
-    if (sizer_) sizer_->forgetStream();  // the exchange is measured afresh (the size in force stays)
-    thrust_held_ = false;                // a reset zeroes the ROV body's commanded thrust
+    // The reset on a copy first, and its first step tried on another: a state that cannot be stepped (a
+    // violent one diverges even in substeps) is refused with the step's reason, and the running cable is
+    // kept as it was; nothing of it is published.
+    CableSimulator candidate(*sim_);
     if (req.positions.empty()) {
-      sim_->reset();
+      candidate.reset();
     } else {
       // With a winch the shape applies to the configured deployment: the winch goes back to its start.
-      if (sim_->hasWinch()) sim_->reset();
+      if (candidate.hasWinch()) candidate.reset();
       const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(req.positions.data(), req.positions.size());
       Eigen::VectorXd qd = Eigen::VectorXd::Zero(q.size());
       if (!req.velocities.empty()) qd = Eigen::Map<const Eigen::VectorXd>(req.velocities.data(), req.velocities.size());
-      sim_->setPaperState(q, qd);
+      candidate.setPaperState(q, qd);
     }
+    const StepReport first = candidate.trialStep();
+    if (!first.ok) {
+      ++status_.refused_commands;
+      res.success = false;
+      res.message = "refused, the cable keeps its state: the state cannot be stepped at dt = " +
+                    std::to_string(candidate.dt()) + " s (" + first.message.substr(0, first.message.find("; state kept")) + ")";
+      ROS_WARN_STREAM_THROTTLE(kLogPeriod, "cable_dynamics: reset " << res.message);
+      return true;
+    }
+    *sim_ = std::move(candidate);
   } catch (const std::invalid_argument& e) {
     ++status_.refused_commands;
     res.success = false;
     res.message = e.what();
     return true;
   }
+  if (sizer_) sizer_->forgetStream();  // the exchange is measured afresh (the size in force stays)
+  thrust_held_ = false;                // a reset zeroes the ROV body's commanded thrust
   restoreLivePoses();
   restartClock();  // the simulator's time is 0 again
   // Tuned coefficients stay (they are the simulator's now); a tuned current is an input like the topic's

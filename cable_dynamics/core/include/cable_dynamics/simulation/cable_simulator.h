@@ -256,6 +256,12 @@ class CableSimulator {
   double energyRise() const { return scheme_->balancesEnergy() ? -1.0 : energy_rise_; }
   /// Steps since reset that needed substeps.
   long retriedSteps() const { return retried_steps_; }
+  /// The next step taken on a copy of this simulator (this one unchanged): whether the present state can be
+  /// stepped at all, and why not (a reset's check before the state is used). Allocates the copy.
+  StepReport trialStep() const {
+    CableSimulator probe(*this);
+    return probe.step();
+  }
   /// Axial elasticity (0 with rigid links): the largest tension a link's stretch has carried at a step's
   /// end since the last reset [N], and the snaps since then: a link shorter than unstretched by more than
   /// 0.1 % of its length (slack) that comes taut (s >= 0), judged at the steps' ends.
@@ -288,7 +294,7 @@ class CableSimulator {
   CableParams params_;
   SimulatorUse use_;
   ChainDynamics dynamics_;
-  std::unique_ptr<TimeScheme> scheme_;
+  SchemeHolder scheme_;  ///< copied by clone(): a copy of the simulator is a trial of it
   EndConditions ends_;
   StepLimits limits_;
   double dt_;                           ///< [s]

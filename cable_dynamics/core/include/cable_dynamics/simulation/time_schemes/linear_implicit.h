@@ -43,6 +43,8 @@ class LinearImplicitScheme : public TimeScheme {
   /// Its stages evaluate the rates afresh every step; the Jacobian it reuses does not read the thrust.
   void forgetRates() override {}
 
+  std::unique_ptr<TimeScheme> clone() const override { return std::make_unique<LinearImplicitScheme>(*this); }
+
  private:
   /// A stage's powers [W]: what the base (and a winch's paid-out cable), the coupling and turning clamps put
   /// in, and the power of the drag, added-mass, damper and seabed forces (negative when they take energy

@@ -19,6 +19,8 @@ class Rk4Scheme : public TimeScheme {
   bool evaluateEnd(ChainDynamics& dynamics, const EndInputs& ends, const Eigen::VectorXd& x) override;
   void forget() override { start_known_ = false; }
 
+  std::unique_ptr<TimeScheme> clone() const override { return std::make_unique<Rk4Scheme>(*this); }
+
  private:
   bool start_known_ = false;  ///< k1_ holds x' at the state the next advance() starts from
   Eigen::VectorXd k1_, k2_, k3_, k4_, stage_;  ///< (state size)

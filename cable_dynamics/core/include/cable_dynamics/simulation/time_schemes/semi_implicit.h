@@ -20,6 +20,8 @@ class SemiImplicitScheme : public TimeScheme {
   bool advance(ChainDynamics& dynamics, const EndConditions& ends, double t, double h, Eigen::VectorXd& x) override;
   bool balancesEnergy() const override { return false; }
 
+  std::unique_ptr<TimeScheme> clone() const override { return std::make_unique<SemiImplicitScheme>(*this); }
+
  private:
   /// Step of the central differences in the angular velocities [rad/s] and the rotations [rad].
   static constexpr double kPerturbation = 1e-6;

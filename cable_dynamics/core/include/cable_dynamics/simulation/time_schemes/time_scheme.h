@@ -39,6 +39,27 @@ class TimeScheme {
   /// An input that enters the rates but not their Jacobian changed (an ROV body's thrust): the rates
   /// evaluated earlier may not be reused (RK4's first stage), a Jacobian may.
   virtual void forgetRates() { forget(); }
+
+  /// A copy, workspace and all (a trial simulator: CableSimulator's copy).
+  virtual std::unique_ptr<TimeScheme> clone() const = 0;
+};
+
+/// Owns one scheme and copies it by clone(), so that a CableSimulator is copied as a whole.
+class SchemeHolder {
+ public:
+  explicit SchemeHolder(std::unique_ptr<TimeScheme> scheme) : scheme_(std::move(scheme)) {}
+  SchemeHolder(const SchemeHolder& other) : scheme_(other.scheme_ ? other.scheme_->clone() : nullptr) {}
+  SchemeHolder(SchemeHolder&&) = default;
+  SchemeHolder& operator=(const SchemeHolder& other) {
+    if (this != &other) scheme_ = other.scheme_ ? other.scheme_->clone() : nullptr;
+    return *this;
+  }
+  SchemeHolder& operator=(SchemeHolder&&) = default;
+  TimeScheme* operator->() const { return scheme_.get(); }
+  TimeScheme& operator*() const { return *scheme_; }
+
+ private:
+  std::unique_ptr<TimeScheme> scheme_;
 };
 
 /// The scheme `integrator` for chains of `links` links (rho_infinity: the implicit scheme's, SimulationParams),
