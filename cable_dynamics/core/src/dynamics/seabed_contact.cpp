@@ -73,7 +73,13 @@ SeabedContactConstants makeSeabedContact(const CableParams& params, const LinkPr
     c.damping[k] = 2.0 * s.damping_ratio * std::sqrt(c.stiffness * (per_length + p.added_mass_per_length(k)));
   }
   const double load_weight = p.gravity * p.load_submerged_mass;
-  c.load_contact = params.load.mode != LoadMode::kAttached && params.load.mode != LoadMode::kBody && load_weight > 0.0;
+  // An exact anchor holds the load where it is whatever the bed does (the bed's push would only move the
+  // anchor's reaction by it), and in the statics a load resting on the bed fought the anchor's hold: a
+  // light line anchored on the bottom stalled there (bench/seabed_step). A spring anchor gives: the bed
+  // holds its load too.
+  c.load_contact = (params.load.mode == LoadMode::kFree ||
+                    (params.load.mode == LoadMode::kAnchored && !params.load.heldExactly())) &&
+                   load_weight > 0.0;
   if (c.load_contact) {
     c.load_stiffness = kRestingShare * load_weight / s.penetration;
     c.load_damping = 2.0 * s.damping_ratio * std::sqrt(c.load_stiffness * (p.load_mass + params.load.added_mass));
