@@ -49,10 +49,10 @@ void ChainDynamics::followAzimuths(const Eigen::VectorXd& x) {
   cable_dynamics::followAzimuths(links(), x, data_.azimuths, data_.deployed.firstLink());
 }
 
-int ChainDynamics::placeContactAnchors(const Eigen::VectorXd& x, const EndInputs& ends, bool slide, int winch_links) {
-  if (!data_.anchors.active()) return 0;
+void ChainDynamics::placeContactAnchors(const Eigen::VectorXd& x, const EndInputs& ends, bool slide, int winch_links) {
+  if (!data_.anchors.active()) return;
   forwardPass(x, ends, Stage::kKinematics);
-  return cable_dynamics::placeContactAnchors(model_, data_, slide, winch_links);
+  cable_dynamics::placeContactAnchors(model_, data_, slide, winch_links);
 }
 
 bool ChainDynamics::solve(const Eigen::VectorXd& x, const EndInputs& ends, bool all_joint_forces) {

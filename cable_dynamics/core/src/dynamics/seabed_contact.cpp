@@ -23,25 +23,21 @@ bool stuck(const ContactLaw& law, const ContactPlace& place, const Vec3& v) {
   return dot(w, w) < 1.0;
 }
 
-/// The anchor `anchor` [m] of a point at `point` [m] on the bed (inward normal `normal`) after a step:
-/// where it was if the point's offset along the bed is within `reach` [m], else `reach` behind the point
-/// along that offset (the slip the Coulomb law allowed). Returns true when it slid.
-bool slideAnchor(const Vec3& point, const Vec3& normal, double reach, double* anchor) {
-  const Vec3 offset = point - Vec3{anchor[0], anchor[1], anchor[2]};
-  const Vec3 along = offset - dot(offset, normal) * normal;
-  const double distance = std::sqrt(dot(along, along));
-  if (distance <= reach) return false;
-  const Vec3 moved = point - (reach / distance) * along;
-  anchor[0] = moved.x;
-  anchor[1] = moved.y;
-  anchor[2] = moved.z;
-  return true;
-}
-
+/// Puts the anchor `anchor` (3 values) on `point` [m].
 void anchorAt(const Vec3& point, double* anchor) {
   anchor[0] = point.x;
   anchor[1] = point.y;
   anchor[2] = point.z;
+}
+
+/// The anchor `anchor` [m] of a point at `point` [m] on the bed (inward normal `normal`) after a step:
+/// where it was if the point's offset along the bed is within `reach` [m], else `reach` behind the point
+/// along that offset (the slip the Coulomb law allowed).
+void slideAnchor(const Vec3& point, const Vec3& normal, double reach, double* anchor) {
+  const Vec3 offset = ContactAnchors::offset(anchor, 0, point);
+  const Vec3 along = offset - dot(offset, normal) * normal;
+  const double distance = std::sqrt(dot(along, along));
+  if (distance > reach) anchorAt(point - (reach / distance) * along, anchor);
 }
 
 }  // namespace
@@ -105,7 +101,7 @@ CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactCon
     const double s = c.node[j] * l;
     place.delta = base.z + s * axis.z - depth;
     if (place.delta <= 0.0) continue;
-    if (anchors) place.offset = base + s * axis - Vec3{anchors[3 * j], anchors[3 * j + 1], anchors[3 * j + 2]};
+    if (anchors) place.offset = ContactAnchors::offset(anchors, j, base + s * axis);
     PointContact contact;
     contactForce(law, place, velocity + s * rate, contact);
     force = force + contact.force;
@@ -161,7 +157,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
         ContactPlace place;
         PointContact contact;
         const bool touching = contactPlace(c.bed, point, axis, place);
-        if (touching && anchors) place.offset = point - Vec3{anchors[3 * j], anchors[3 * j + 1], anchors[3 * j + 2]};
+        if (touching && anchors) place.offset = ContactAnchors::offset(anchors, j, point);
         if (touching) contactForce(law, place, velocity + s * rate, contact);
         if (report && !report->touching) {
           const double penetration = touching ? place.delta : Seabed::penetration(c.bed.probe(point.x, point.y), point.z);
@@ -203,7 +199,7 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
     ContactPlace place;
     PointContact contact;
     if (contactPlace(c.bed, toVec3(data.tip_position), {0.0, 0.0, 0.0}, place)) {
-      if (data.anchors.active()) place.offset = toVec3(Eigen::Vector3d(data.tip_position - data.anchors.load));
+      place.offset = data.anchors.loadOffset(data.tip_position);
       contactForce(c.loadLaw(), place, toVec3(data.tip_velocity), contact);
       if (load_external) *load_external += toEigen(contact.force);
       dissipation += contact.dissipation;
@@ -222,11 +218,10 @@ CABLE_HOT_PATH void addSeabedContact(const ChainModel& model, ChainData& data) {
   data.contact_dissipation = contactPass(model, data, &data.links, &data.load_external, nullptr);
 }
 
-int placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, int winch_links) {
-  if (!data.anchors.active()) return 0;
+void placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, int winch_links) {
+  if (!data.anchors.active()) return;
   const SeabedContactConstants& c = model.seabedContact();
   const int n = model.links(), first = data.deployed.firstLink();
-  int slid = 0;
   for (int k = 0; k < n; ++k) {
     const double l = data.deployed.get(&LinkConstants::length, k);
     const Eigen::Vector3d base = data.links.get(&LinkBlock::base_pos, k), u = data.links.get(&LinkBlock::u, k);
@@ -242,7 +237,7 @@ int placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, in
       double* anchor = data.anchors.link.col(k * c.points + j).data();
       ContactPlace place;
       if (holds && contactPlace(c.bed, point, toVec3(u), place)) {
-        slid += slideAnchor(point, place.normal, c.friction_breakout, anchor) ? 1 : 0;
+        slideAnchor(point, place.normal, c.friction_breakout, anchor);
       } else {
         anchorAt(point, anchor);  // off the bed (or a new state): the anchor goes with the point
       }
@@ -252,12 +247,11 @@ int placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, in
     const Vec3 point = toVec3(data.tip_position);
     ContactPlace place;
     if (slide && contactPlace(c.bed, point, {0.0, 0.0, 0.0}, place)) {
-      slid += slideAnchor(point, place.normal, c.friction_breakout, data.anchors.load.data()) ? 1 : 0;
+      slideAnchor(point, place.normal, c.friction_breakout, data.anchors.load.data());
     } else {
       data.anchors.load = data.tip_position;
     }
   }
-  return slid;
 }
 
 void reportSeabedContact(const ChainModel& model, const ChainData& data, SeabedReport& report) {

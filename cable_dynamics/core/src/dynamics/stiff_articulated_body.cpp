@@ -121,7 +121,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   load_contact_damping_.setZero();
   ContactPlace place;
   if (contact.load_contact && contactPlace(contact.bed, toVec3(data.tip_position), {0.0, 0.0, 0.0}, place)) {
-    if (data.anchors.active()) place.offset = toVec3(Eigen::Vector3d(data.tip_position - data.anchors.load));
+    place.offset = data.anchors.loadOffset(data.tip_position);
     contactJacobian(contact.loadLaw(), place, data.tip_velocity, load_contact_stiffness_, load_contact_damping_);
   }
   coupling_stiffness_ = ends.load_coupled ? load.coupling().stiffnessJacobian() : 0.0;
@@ -149,9 +149,7 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
     ContactPlace place;
     const Eigen::Vector3d point = base + s * u;
     if (!contactPlace(c.bed, toVec3(point), toVec3(u), place)) continue;
-    if (const double* anchors = data.anchors.of(k)) {
-      place.offset = toVec3(point) - Vec3{anchors[3 * j], anchors[3 * j + 1], anchors[3 * j + 2]};
-    }
+    if (const double* anchors = data.anchors.of(k)) place.offset = ContactAnchors::offset(anchors, j, toVec3(point));
     contactJacobian(law, place, velocity + s * rate, stiffness, damper);
     t.in_contact = true;
     double power = 1.0;

@@ -105,15 +105,12 @@ class ChainDynamics {
 
   /// The seabed friction's anchors at state x (static friction; nothing otherwise): at their points
   /// (`slide` false: a new state), or slid to within their reach (`slide` true: after each accepted step;
-  /// seabed_contact.h; `winch_links` as there). One kinematics pass; returns the points that slid. O(n),
-  /// no allocation.
-  int placeContactAnchors(const Eigen::VectorXd& x, const EndInputs& ends, bool slide, int winch_links = 1);
+  /// seabed_contact.h; `winch_links` as there). One kinematics pass. O(n), no allocation.
+  void placeContactAnchors(const Eigen::VectorXd& x, const EndInputs& ends, bool slide, int winch_links = 1);
   /// The anchors slid after an accepted step, at the kinematics the last evaluation left in data(): the
   /// caller's promise that it was at the step's end state (CableSimulator::advance ends with one there, for
   /// its energy balance), which saves placeContactAnchors' kinematics pass on every step.
-  int slideContactAnchors(int winch_links = 1) {
-    return data_.anchors.active() ? cable_dynamics::placeContactAnchors(model_, data_, true, winch_links) : 0;
-  }
+  void slideContactAnchors(int winch_links = 1) { cable_dynamics::placeContactAnchors(model_, data_, true, winch_links); }
 
   /// x' at state x (size stateSize()). Returns false when the state is not finite, the mass matrix is
   /// not positive definite or an acceleration is not finite; xdot is then unspecified.

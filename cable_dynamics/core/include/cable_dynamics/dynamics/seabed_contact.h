@@ -77,9 +77,8 @@ EIGEN_ALWAYS_INLINE bool contactPlace(const Seabed& bed, const Vec3& p, const Ve
 /// (along the bed) slides to x_b behind it, the Coulomb law's slip; a point off the bed takes its anchor
 /// with it; and the winch's link, whose points move along the cable as its length changes, keeps its
 /// anchors on its points (regularized friction only), as do the `winch_links` first deployed links in all
-/// (2 after the winch added or removed a link: the link it split or merged too). Returns the contact
-/// points that slid [-]. O(n).
-int placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, int winch_links = 1);
+/// (2 after the winch added or removed a link: the link it split or merged too). O(n).
+void placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, int winch_links = 1);
 
 /// What the outputs show of the contact at one state (paper frame).
 struct SeabedReport {

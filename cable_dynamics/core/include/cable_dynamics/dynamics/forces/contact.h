@@ -75,6 +75,14 @@ struct ContactAnchors {
   }
   /// Link k's K anchors (3 K, point after point), or null where it has none placed.
   const double* of(int k) const { return points > 0 && placed[k] ? link.col(k * points).data() : nullptr; }
+  /// The offset p - anchor of point j at `point` [m] from its anchor in `anchors` (a link's, from of()).
+  static Vec3 offset(const double* anchors, int j, const Vec3& point) {
+    return point - Vec3{anchors[3 * j], anchors[3 * j + 1], anchors[3 * j + 2]};
+  }
+  /// The load's offset from its anchor [m] (zero without static friction).
+  Vec3 loadOffset(const Eigen::Vector3d& tip) const {
+    return active() ? toVec3(Eigen::Vector3d(tip - load)) : Vec3{0.0, 0.0, 0.0};
+  }
 };
 
 /// The unit direction along the bed (normal n) of an axis [-]; false when the axis is (nearly) normal to it.
@@ -181,8 +189,9 @@ inline void contactJacobian(const ContactLaw& law, const ContactPlace& place, co
   }
 }
 
-/// The law at rest (v = 0: no damper; no friction: the statics solve the equilibrium without it, one of
-/// the equilibria the friction allows, and the anchors are then placed there), for the statics: the spring's force -share k delta n [N].
+/// The law at rest, for the statics: the spring's force -share k delta n [N]. No damper (v = 0) and no
+/// friction: the statics solve the equilibrium without it, one of the equilibria the friction allows, and
+/// the anchors are then placed there.
 inline Eigen::Vector3d contactForceAtRest(const ContactLaw& law, const ContactPlace& place) {
   return -(law.stiffness * place.delta) * toEigen(place.normal);
 }
