@@ -132,6 +132,68 @@ TEST(Retune, RefusesAnotherCable) {
   EXPECT_THROW(sim.retune(loadConfigString(kCable, {"cable.links=7"})), std::invalid_argument);
 }
 
+// A new coupling stiffness mid-run is bumpless (EndConditions::shiftCouplingRest). The cable hangs at rest
+// in a 0.8 m/s current, its tip on a fixed target through the coupling (3000 N/m), which carries 75 N at an
+// extension of 25 mm. Softened to 1800 N/m (what the exchange's sizer does under load), a plain switch
+// changes the force at that extension by 1 - 1800/3000 = 40 % in one step. Here the force stays as it was
+// at the switch (to round-off) and then moves smoothly to the new equilibrium's: its largest change in a
+// step is 8e-6 of it and it passes the two forces by 7e-5 of it (RK4 and implicit alike; the bounds 5e-5
+// and 5e-4, six and seven times those, and 8000 times under the plain switch's kick). The tip ends where
+// the statics put it with the new spring (the truth: a cable configured with 1800 N/m, at equilibrium),
+// within 1 um after 60 s (measured 0.1 um: the shift left, 5e-6 of 16 mm, and the statics' tolerance).
+TEST(Retune, ANewCouplingStiffnessKeepsTheForceAndTheTipSettlesOnTheNewSpring) {
+  const char* cable =
+      "cable: {links: 6, length: 12.0, diameter: 0.03, mass_per_length: 1.0}\n"
+      "load: {mass: 5.0, volume: 0.002, mode: attached, coupling: {stiffness: 3000.0, damping: 300.0},\n"
+      "       motion: {offset: [-1.0, 0.0, 1.0]}}\n"
+      "fluid: {current: [0.8, 0.0, 0.0]}\n"
+      "initial: {mode: equilibrium, elevation: 0.5}\n"
+      "simulation: {dt: 0.002}\n";
+  for (const char* integrator : {"rk4", "implicit"}) {
+    SCOPED_TRACE(integrator);
+    const std::string scheme = std::string("simulation.integrator=") + integrator;
+    CableSimulator sim(loadConfigString(cable, {scheme}));
+    SimulationSnapshot snap;
+    run(sim, 500);  // 1 s at rest
+    sim.snapshot(snap);
+    const Eigen::Vector3d before = snap.port.force;
+    const double extension = before.norm() / 3000.0;
+    ASSERT_GT(before.norm(), 5.0) << "the coupling carries too little to judge a kick";
+    sim.retune(loadConfigString(cable, {scheme, "load.coupling.stiffness=1800.0"}));
+    sim.snapshot(snap);
+    EXPECT_LT((snap.port.force - before).norm(), 1e-9 * before.norm()) << "the force jumped at the retune";
+    EXPECT_DOUBLE_EQ(snap.port.stiffness(0, 0), -1800.0) << "the port publishes the new stiffness";
+    // The truth the run must end at: the equilibrium of the cable configured with 1800 N/m.
+    CableSimulator settled(loadConfigString(cable, {scheme, "load.coupling.stiffness=1800.0"}));
+    SimulationSnapshot truth;
+    settled.snapshot(truth);
+    const double low = std::min(before.norm(), truth.port.force.norm());
+    const double high = std::max(before.norm(), truth.port.force.norm());
+    double largest_step = 0.0, overshoot = 0.0, last = before.norm();
+    for (int i = 0; i < 30000; ++i) {  // 60 s
+      const StepReport r = sim.step();
+      ASSERT_TRUE(r.ok && r.substeps == 1) << "step " << i << ": " << r.message;
+      sim.snapshot(snap);
+      const double force = snap.port.force.norm();
+      largest_step = std::max(largest_step, std::abs(force - last) / before.norm());
+      overshoot = std::max({overshoot, (force - high) / before.norm(), (low - force) / before.norm()});
+      last = force;
+    }
+    std::printf("[ bumpless ] %s: force %.3f N at an extension of %.2f mm, %.3f N at the new equilibrium; "
+                "largest change in a step %.2e of it (a plain switch: %.2f), beyond the two %.2e\n",
+                integrator, before.norm(), 1e3 * extension, truth.port.force.norm(), largest_step,
+                1.0 - 1800.0 / 3000.0, overshoot);
+    EXPECT_LT(largest_step, 5e-5);
+    EXPECT_LT(overshoot, 5e-4);
+    const int n = sim.links();
+    const double miss = (snap.chain.ends.col(n) - truth.chain.ends.col(n)).norm();
+    const double moved = (truth.chain.ends.col(n) - snap.port.point).norm() - extension;
+    std::printf("[ bumpless ] %s: tip %.3e m from the 1800 N/m equilibrium's after 60 s (it moved %.2f mm)\n",
+                integrator, miss, 1e3 * moved);
+    EXPECT_LT(miss, 1e-6);
+  }
+}
+
 // With a winch the deployment stays: the same first slot and link lengths after a retune, mid pay-out.
 TEST(Retune, KeepsTheWinchDeployment) {
   const std::string cable =

@@ -79,7 +79,9 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
     data.tip_demand = ends.target_acceleration - 2.0 * rate * (data.tip_velocity - ends.target_velocity) -
                       rate * rate * (data.tip_position - ends.target_position);
   } else if (ends.load_coupled) {
-    data.coupling = load.coupling().force(data.tip_position, data.tip_velocity, ends.target_position, ends.target_velocity);
+    data.coupling = load.coupling().force(data.tip_position, data.tip_velocity,
+                                          ends.target_position + ends.coupling_rest_shift,
+                                          ends.target_velocity + ends.coupling_rest_shift_rate);
     data.load_external += data.coupling;
   }
   data.contact_dissipation = 0.0;

@@ -145,6 +145,7 @@ void CableSimulator::updateBodyThrust() {
 
 StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) {
   ends_.setHoldOffset(Eigen::Vector3d::Zero());  // the statics hold the anchor itself
+  ends_.shiftCouplingRest(Eigen::Vector3d::Zero(), time_);  // and find the coupling's own extension
   const EndInputs ends = ends_.at(time_);
   StaticProblem problem;
   problem.base_position = ends.base_position;

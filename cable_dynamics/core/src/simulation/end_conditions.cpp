@@ -58,6 +58,18 @@ void EndConditions::reset() {
   external_clamp_twist_ = rest_clamp_twist_;
   body_thrust_.setZero();
   hold_offset_.setZero();
+  coupling_shift_.setZero();
+}
+
+void EndConditions::couplingRestShift(double t, Eigen::Vector3d& shift, Eigen::Vector3d& rate) const {
+  if (coupling_shift_.isZero()) {
+    shift.setZero();
+    rate.setZero();
+    return;
+  }
+  const double a = std::max(t - coupling_shift_time_, 0.0) / kCouplingShiftBleed, decay = std::exp(-a);
+  shift = (1.0 + a) * decay * coupling_shift_;
+  rate = (-a * decay / kCouplingShiftBleed) * coupling_shift_;
 }
 
 EndInputs EndConditions::at(double t) const {
@@ -85,6 +97,7 @@ EndInputs EndConditions::at(double t) const {
     if (load_.mode != LoadMode::kAnchored || !load_.heldExactly()) ends.target_acceleration.setZero();
   }
   if (load_.heldExactly()) ends.target_position += hold_offset_;  // zero unless the steps hold it by a spring
+  if (ends.load_coupled) couplingRestShift(t, ends.coupling_rest_shift, ends.coupling_rest_shift_rate);
   // The clamp turns with the vessel: its frame is the vessel's rotation of its rest frame.
   if (external_base_ ? base_attitude_.coeffs() != Eigen::Quaterniond::Identity().coeffs()
                      : !base_.motion.attitude_amplitude.isZero()) {

@@ -164,7 +164,9 @@ class CableSimulator {
   /// those keys changed (other keys of `params` are not read), and rebuilds the chain's constants from
   /// them (simulation/tuning.cpp). Allocates: call it between steps, never within one. The state, the
   /// time, the deployment, the inputs and the energy bookkeeping carry on (none of these coefficients
-  /// stores energy: drag and added mass only dissipate, the coupling's work is a work input). Throws
+  /// stores energy: drag and added mass only dissipate, the coupling's work is a work input). A new
+  /// coupling stiffness is bumpless: the spring's force stays as it was at the step and its rest point's
+  /// shift bleeds off in a few seconds (EndConditions::shiftCouplingRest). Throws
   /// std::invalid_argument, changing nothing, when `params` has another number of links or sections, or
   /// (RK4) when the new coefficients need a step below simulation.dt (checkSimulatorInputs: ConfigError
   /// naming it and the mode).

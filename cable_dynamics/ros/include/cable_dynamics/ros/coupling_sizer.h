@@ -20,10 +20,11 @@ class CouplingSizer {
   static constexpr double kSpring = 0.25;
   static constexpr double kDamper = 0.5;
   /// A new size is applied only when the measured delay exceeds the one the size in force was made for by
-  /// more than kSoften (a softer coupling), or falls below it by more than kStiffen: each new size changes
-  /// the spring's force at the offset it holds (40 N at 1.3 cm, k 3 kN/m) in one step, and a size chasing
-  /// the stamps' jitter kicked the tip's mode on the coupling over and over (the force swung 30-52 N about
-  /// its 40.7 N at 10 % hysteresis on the size).
+  /// more than kSoften (a softer coupling), or falls below it by more than kStiffen. Before resizes were
+  /// bumpless (CableSimulator::retune now keeps the spring's force through a new stiffness), each changed
+  /// the force at the offset it held (40 N at 1.3 cm, k 3 kN/m) in one step, and a size chasing the
+  /// stamps' jitter kicked the tip's mode on the coupling over and over (the force swung 30-52 N about its
+  /// 40.7 N at 10 % hysteresis); the hysteresis stays so that the size does not chase the jitter.
   static constexpr double kSoften = 0.25;
   static constexpr double kStiffen = 0.5;
   /// The exchange period is this quantile of the last kIntervals stamp intervals: the slow exchanges, not
