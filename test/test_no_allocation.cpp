@@ -120,12 +120,14 @@ TEST(NoAllocation, RecursiveRk4Step) { expectNoAllocation({"simulation.formulati
 TEST(NoAllocation, StepAfterARetune) {
   const char* cable =
       "cable: {links: 8, length: 16.0, diameter: 0.03, mass_per_length: 1.0}\n"
-      "load: {mass: 5.0, volume: 0.002, mode: attached}\n"
+      "load: {mass: 5.0, volume: 0.002, mode: attached, coupling: {integral_time: 2.0}}\n"
       "fluid: {density: 1025.0, current: [1.0, 0.2, 0.0]}\n"
       "initial: {elevation: 0.3}\n";
   CableSimulator sim(loadConfigString(cable));
   ASSERT_TRUE(sim.step().ok);
-  sim.retune(loadConfigString(cable, {"fluid.drag_normal=2.0", "fluid.added_mass=0.5", "load.coupling.damping=100"}));
+  // With a bumpless new stiffness and the coupling's integral action, both between steps.
+  sim.retune(loadConfigString(cable, {"fluid.drag_normal=2.0", "fluid.added_mass=0.5", "load.coupling.damping=100",
+                                      "load.coupling.stiffness=5000"}));
   AllocationGuard guard;
   guard.start();
   bool ok = true;

@@ -78,6 +78,8 @@ target_compile_definitions(test_seabed PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT
 # Issue 26: the ROV's port (stiffness and damping of the coupling) and the first-order hold of a target.
 catkin_add_gtest(test_coupling_port test/test_coupling_port.cpp)
 target_link_libraries(test_coupling_port cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+catkin_add_gtest(test_coupling_integral test/test_coupling_integral.cpp)
+target_link_libraries(test_coupling_integral cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 catkin_add_gtest(test_rov_body test/test_rov_body.cpp)
 target_link_libraries(test_rov_body cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 

@@ -190,10 +190,10 @@ class RovClient(unittest.TestCase):
         cls.reset = rospy.ServiceProxy(NS + "/reset", Reset)
         cls.reset_to_equilibrium = rospy.ServiceProxy(NS + "/reset_to_equilibrium", ResetToEquilibrium)
 
-    def case(self, mass, rate, rise=SLACK, judged_against_body=True):
-        """Runs the client against the node and the body run beside it. judged_against_body: the issue's bounds
-        (force within 5 %, ROV within 1 cm of the body run's); otherwise only that the exchange is steady (no
-        limit cycle), for a case whose offset from the body run is a known, documented limit."""
+    def case(self, mass, rate, rise=SLACK, position_judged=True):
+        """Runs the client against the node and the body run beside it, with the issue's bounds: the force within
+        5 % of the body run's and (position_judged) the ROV within 1 cm of it; a case whose position is within
+        that bound by too thin a margin to judge is reported, and judged for steadiness (the swing)."""
         point = station(rise)
         reference = body_reference(mass, point)
         self.assertTrue(self.reset().success)
@@ -236,9 +236,9 @@ class RovClient(unittest.TestCase):
         # A limit cycle pumps joules a second into the ROV through the port; a passive exchange does not. The
         # cyclic part measured at most 0.0008 J above the body run's (docs/ROV_COUPLING.md).
         self.assertLess(cyclic, ref_cyclic + 0.005)
-        if judged_against_body:
-            # The issue's bounds: 5 % and 1 cm (measured at most 1.9 % and 9.1 mm).
-            self.assertLess(force_error, 0.05)
+        # The issue's bounds: 5 % and 1 cm (measured at most 3.1 % and 6.9 mm where the position is judged).
+        self.assertLess(force_error, 0.05)
+        if position_judged:
             self.assertLess(position_error, 0.01)
 
     def test_12kg_100hz(self):
@@ -263,19 +263,19 @@ class RovClient(unittest.TestCase):
         self.case(5.0, 20.0)
 
     def test_5kg_100hz_near_taut(self):
-        # Within the issue's bounds when measured (1.5 %, 9.1 mm), but the position with a 10 % margin only:
-        # judged for steadiness, the figure reported (docs/ROV_COUPLING.md).
-        self.case(5.0, 100.0, NEAR_TAUT, judged_against_body=False)
+        # The force judged (measured 0.64 %); the position reported only: 9.1 mm from the body run's, within 1 cm
+        # by a margin too thin to judge (the ROV's own station keeping against its pose delay).
+        self.case(5.0, 100.0, NEAR_TAUT, position_judged=False)
 
     def test_20kg_50hz_near_taut(self):
         self.case(20.0, 50.0, NEAR_TAUT)
 
     def test_5kg_20hz_near_taut(self):
-        # Steady, but 8 % below the body run's force (measured 35.2-35.4 N against 37.2 N): the coupling sized
-        # for 20 Hz (350 N/m) lets the tip sit 0.1 m from the ROV, and 1 m short of its reach the tether's
-        # pull changes by about 20 N/m. An open limit (docs/ROV_COUPLING.md); the body mode is exact here.
-        self.case(5.0, 20.0, NEAR_TAUT, judged_against_body=False)
-
+        # The force judged: 0.58 % from the body run's with the coupling's integral action (demo_rov.yaml's
+        # load.coupling.integral_time), 8-12 % below it without (the coupling sized for 20 Hz, 350 N/m, let the
+        # tip sit 0.1 m from the ROV, and 1 m short of its reach the pull changes by about 20 N/m). The position
+        # as in the 100 Hz case: 8.8 mm, reported only.
+        self.case(5.0, 20.0, NEAR_TAUT, position_judged=False)
 
 if __name__ == "__main__":
     rospy.init_node("test_rov_client", anonymous=True)

@@ -180,6 +180,7 @@ void parseLoad(Section load, CableParams& p) {
   Section coupling = load.sub("coupling");
   p.load.coupling_stiffness = coupling.number("stiffness", 2.0e4, ranges::kCouplingStiffness);
   p.load.coupling_damping = coupling.number("damping", 2.0e3, ranges::kCouplingDamping);
+  p.load.coupling_integral_time = coupling.number("integral_time", 0.0, ranges::kCouplingIntegralTime);
   coupling.rejectUnknownKeys();
   p.load.motion = parseMotion(load.sub("motion"));
   p.load.attachment = vector3(load, "attachment", ranges::kBodyPoint);

@@ -144,6 +144,7 @@ void checkEnds(const CableParams& p) {
   check("load.added_mass", load.added_mass, ranges::kAddedMass);
   check("load.coupling.stiffness", load.coupling_stiffness, ranges::kCouplingStiffness);
   check("load.coupling.damping", load.coupling_damping, ranges::kCouplingDamping);
+  check("load.coupling.integral_time", load.coupling_integral_time, ranges::kCouplingIntegralTime);
   checkMotion("load.motion", load.motion);
   checkEach("load.attachment", load.attachment, ranges::kBodyPoint);
   checkUnit("load.direction", load.direction);

@@ -159,7 +159,22 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
   problem.tip_clamp_axis = ends.tip_clamp_axis;
   dynamics_.applyEnds(ends);  // the winch's link at its present length
   StaticSolution s = solveStatics(dynamics_.model(), dynamics_.deployed(), dynamics_.current(), problem, options);
+  // With the coupling's integral action the equilibrium has the tip on the target and the spring's rest
+  // point shifted by the tension over k: the statics move their target by the tip's miss until it is under
+  // kIntegralStaticsTolerance (each pass shrinks the miss by K / (k + K), K the cable's own stiffness at its
+  // end), and the dynamics' integral takes over what is left.
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  if (ends_.couplingIntegral() && ends.load_coupled && !dynamics_.model().heldTip()) {
+    for (int pass = 0; pass < kIntegralStaticsPasses && s.converged; ++pass) {
+      const Eigen::Vector3d miss = s.tip_position - ends.target_position;
+      if (miss.norm() <= kIntegralStaticsTolerance) break;
+      shift -= miss;
+      problem.target_position = ends.target_position + shift;
+      s = solveStatics(dynamics_.model(), dynamics_.deployed(), dynamics_.current(), problem, options);
+    }
+  }
   if (!s.converged) return s;
+  ends_.shiftCouplingRest(shift, time_);
   const int n = links();
   setRestState(s, x_);
   // A base that starts moving under the chain at rest moves the tip with it: the exact anchor's start is
@@ -420,6 +435,7 @@ StepReport CableSimulator::step() {
       time_ = t0 + dt_;  // no drift from summing the pieces
       dynamics_.followAzimuths(x_);
       dynamics_.slideContactAnchors();  // at the kinematics advance() left: the new state's
+      integrateCouplingRest();          // at the same kinematics
       if (hasWinch()) {
         dynamics_.dropReleasedHolds(ends_.at(time_));
         finishWinchStep();
@@ -446,6 +462,16 @@ StepReport CableSimulator::step() {
   report.substeps = kMaxSubsteps;
   report.message = message.str();
   return report;
+}
+
+void CableSimulator::integrateCouplingRest() {
+  if (!ends_.couplingIntegral() || dynamics_.model().heldTip()) return;
+  const EndInputs ends = ends_.at(time_);
+  // Anti-windup: a target beyond the cable's reach (the deployed length from the base) is one the tip can
+  // never get to, and integrating that miss would grow the force without bound while the ROV stays there.
+  // The shift holds until the target is back within reach.
+  if (!ends.load_coupled || (ends.target_position - ends.base_position).norm() >= deployedLength()) return;
+  ends_.integrateCouplingRest(dynamics_.data().tip_position - ends.target_position, dt_);
 }
 
 void CableSimulator::snapshot(SimulationSnapshot& out) {

@@ -62,8 +62,8 @@ void EndConditions::reset() {
 }
 
 void EndConditions::couplingRestShift(double t, Eigen::Vector3d& shift, Eigen::Vector3d& rate) const {
-  if (coupling_shift_.isZero()) {
-    shift.setZero();
+  if (coupling_shift_.isZero() || couplingIntegral()) {  // an integral's shift holds between steps
+    shift = coupling_shift_;
     rate.setZero();
     return;
   }

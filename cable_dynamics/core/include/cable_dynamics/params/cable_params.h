@@ -135,6 +135,10 @@ struct LoadParams {
   AnchorHold anchor = AnchorHold::kExact;  ///< mode anchored: held exactly, or by the coupling spring
   double coupling_stiffness = 2.0e4; ///< PD coupling to the anchor (load.anchor spring) / ROV [N/m]
   double coupling_damping = 2.0e3;   ///< [N s/m]
+  /// The coupling's integral action [s], 0 = none: the spring's rest point moves by -(tip - target) / T_i a
+  /// second, so that at rest the tip sits on the target and the spring is preloaded with the tension (a soft
+  /// coupling then passes the force the cable has at the ROV's own point; EndConditions::integrateCouplingRest).
+  double coupling_integral_time = 0.0;
   /// Anchor / ROV target relative to the load's initial position (modes anchored, attached).
   MotionParams motion;
   /// Where the tether enters the ROV, in the ROV's frame (x forward, z up at rest) [m]: the target the

@@ -75,6 +75,7 @@ constexpr NumberRange kDragArea{0.0, 1e4, false, "m^2"};
 constexpr NumberRange kAddedMass{0.0, 1e7, false, "kg"};
 constexpr NumberRange kCouplingStiffness{0.0, 1e9, true, "N/m"};
 constexpr NumberRange kCouplingDamping{0.0, 1e9, false, "N s/m"};
+constexpr NumberRange kCouplingIntegralTime{0.0, 1e4, false, "s"};  ///< 0 = no integral action
 constexpr NumberRange kBodyPoint{-1e3, 1e3, false, "m"};  ///< load.attachment, base.hang_off
 constexpr NumberRange kDirection{-1e3, 1e3, false, ""};   ///< load.direction, base.direction (normalized)
 

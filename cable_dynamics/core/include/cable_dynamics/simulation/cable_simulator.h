@@ -290,6 +290,13 @@ class CableSimulator {
   void deployConfigured();
   /// After an accepted step: the winch moves on and adds or removes a link when its link leaves its band.
   void finishWinchStep();
+  /// The coupling's integral action after an accepted step (EndConditions::integrateCouplingRest), at the
+  /// kinematics the step left.
+  void integrateCouplingRest();
+  /// resetToEquilibrium with the coupling's integral action: at most this many more statics solves, to put
+  /// the tip within this distance of the target [m].
+  static constexpr int kIntegralStaticsPasses = 8;
+  static constexpr double kIntegralStaticsTolerance = 1e-6;
   /// Before a step: the body's thrust, commanded plus the station keeper's at the present pose.
   void updateBodyThrust();
 
