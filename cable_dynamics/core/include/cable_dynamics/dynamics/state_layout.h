@@ -45,8 +45,8 @@ struct EndInputs {
   Eigen::Vector3d target_acceleration = Eigen::Vector3d::Zero();  ///< [m/s^2] (an exact anchor's hold reads it)
   /// The coupling's rest point lies this far from the target [m] and moves from it at this rate [m/s]
   /// (paper frame): a retuned stiffness keeps the spring's force continuous through this shift, which then
-  /// bleeds off (EndConditions::shiftCouplingRest). Zero otherwise. The published attachment point is the
-  /// target.
+  /// bleeds off (EndConditions::shiftCouplingRest), or the coupling's integral action holds the tension in it
+  /// (EndConditions::integrateCouplingRest). Zero otherwise. The published attachment point is the target.
   Eigen::Vector3d coupling_rest_shift = Eigen::Vector3d::Zero();
   Eigen::Vector3d coupling_rest_shift_rate = Eigen::Vector3d::Zero();
   /// The base's clamp turns with the vessel (bending model): its axis (unit), its twist sigma [rad] and
