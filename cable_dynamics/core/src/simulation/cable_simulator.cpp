@@ -145,7 +145,6 @@ void CableSimulator::updateBodyThrust() {
 
 StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) {
   ends_.setHoldOffset(Eigen::Vector3d::Zero());  // the statics hold the anchor itself
-  ends_.shiftCouplingRest(Eigen::Vector3d::Zero(), time_);  // and find the coupling's own extension
   const EndInputs ends = ends_.at(time_);
   StaticProblem problem;
   problem.base_position = ends.base_position;
@@ -173,8 +172,8 @@ StaticSolution CableSimulator::resetToEquilibrium(const StaticOptions& options) 
       s = solveStatics(dynamics_.model(), dynamics_.deployed(), dynamics_.current(), problem, options);
     }
   }
-  if (!s.converged) return s;
-  ends_.shiftCouplingRest(shift, time_);
+  if (!s.converged) return s;  // the state and the coupling's rest shift stay as they were
+  ends_.shiftCouplingRest(shift, time_);  // the statics' own extension (zero without the integral action)
   const int n = links();
   setRestState(s, x_);
   // A base that starts moving under the chain at rest moves the tip with it: the exact anchor's start is
