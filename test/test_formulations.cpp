@@ -15,8 +15,8 @@ TEST(Formulations, SameTrajectoriesForEveryPreset) {
   for (const auto& entry : std::filesystem::directory_iterator(CABLE_CONFIG_DIR)) {
     if (entry.path().extension() != ".yaml") continue;
     const CableParams configured = loadConfigFile(entry.path().string());
-    // The paper's dense formulation carries neither a winch nor an ROV body (both refused there).
-    if (configured.winch.enabled || configured.load.mode == LoadMode::kBody) continue;
+    // The paper's dense formulation carries no winch (refused there).
+    if (configured.winch.enabled) continue;
     ++presets;
     // Nor an exact anchor: those presets are compared with the anchor on its coupling spring (the default
     // gains), the same equations on both sides.

@@ -82,6 +82,8 @@ catkin_add_gtest(test_coupling_integral test/test_coupling_integral.cpp)
 target_link_libraries(test_coupling_integral cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 catkin_add_gtest(test_rov_body test/test_rov_body.cpp)
 target_link_libraries(test_rov_body cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+catkin_add_gtest(test_semi_implicit_body test/test_semi_implicit_body.cpp)
+target_link_libraries(test_semi_implicit_body cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
 catkin_add_gtest(test_step_check test/test_step_check.cpp)
 target_link_libraries(test_step_check cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

@@ -258,7 +258,7 @@ double ChainDynamics::solvedMechanicalEnergy(const Eigen::VectorXd& x, double& m
 void ChainDynamics::generalizedForces(const Eigen::VectorXd& x, const EndInputs& ends, bool with_dampers,
                                       Eigen::VectorXd& out) {
   data_.dense.allocate(links());  // a no-op after construction with the semi-implicit integrator
-  forwardPass(x, ends, Stage::kLoads, with_dampers);  // (no ROV body: the gate refuses it with this scheme)
+  forwardPass(x, ends, Stage::kLoads, with_dampers);  // with an ROV body's terms, which the dense forces read
   assembleGeneralizedForces(model_, data_);
   out = data_.dense.rhs;
 }

@@ -6,6 +6,7 @@
 
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/link_rates.h"
+#include "cable_dynamics/dynamics/rov_body.h"
 
 namespace cable_dynamics {
 namespace {
@@ -48,6 +49,11 @@ void assembleGeneralizedForces(const ChainModel& model, ChainData& data) {
   // Outboard inertia B_k = sum_{j>k} l_j A_j + load, and the known-acceleration (bias) integrals.
   Eigen::Matrix3d outboard = load_inertia * identity;
   Eigen::Vector3d outboard_force = data.load_external - load_inertia * data.tip_known_acc;
+  if (model.body().active) {  // an ROV body on a ball joint: its 3x3 mass at the tip and its bias (rov_body.h),
+                              // as in the recursion (articulated_body.cpp)
+    outboard += data.body.tip_mass;
+    outboard_force -= data.body.tip_mass * data.tip_known_acc + data.body.tip_bias;
+  }
   for (int k = model.links() - 1; k >= 0; --k) {
     w.outboard[k] = outboard;
     const double l = data.deployed.get(&LinkConstants::length, k);
@@ -106,6 +112,7 @@ void denseJointForces(const ChainModel& model, ChainData& data, const Eigen::Vec
     acc += data.deployed.get(&LinkConstants::length, k) * w.axis_acc.col(k);
   }
   data.load_force = model.load().inertia * acc - data.load_external;  // acc: the tip's
+  if (model.body().active) data.load_force += finishRovBody(model.body(), acc, data.body);
   Eigen::Vector3d outboard = data.load_force;
   // The load's added-mass force -m_a a_tip, then the links' (articulated_body.cpp alike).
   data.added_mass_power = -(model.load().inertia - model.load().mass) * acc.dot(data.tip_velocity);

@@ -60,12 +60,6 @@ void checkRovBody(const CableParams& p) {
   if (load.fixity != TipFixity::kPinned) {
     throw ConfigError("load.fixity", "clamped", "pinned with load.mode: body (the tether hangs from a ball joint)");
   }
-  if (p.simulation.formulation != Formulation::kRecursive) {
-    throw ConfigError("simulation.formulation", "paper", "recursive with load.mode: body");
-  }
-  if (p.simulation.integrator == Integrator::kSemiImplicit) {
-    throw ConfigError("simulation.integrator", "semi_implicit", "rk4 or implicit with load.mode: body");
-  }
 }
 
 /// Axial elasticity (cable.axial_stiffness, docs/MODEL.md section 12): what carries it so far, and an EA

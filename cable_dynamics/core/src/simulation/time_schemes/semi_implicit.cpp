@@ -7,16 +7,17 @@
 #include "cable_dynamics/dynamics/dense_solver.h"
 #include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/link_rates.h"
+#include "cable_dynamics/dynamics/rov_body.h"
 
 namespace cable_dynamics {
 
-SemiImplicitScheme::SemiImplicitScheme(int links) {
+SemiImplicitScheme::SemiImplicitScheme(int links, bool body) {
   const int dof = 3 * links;
   for (Eigen::MatrixXd* m : {&jacobian_velocity_, &jacobian_rotation_, &system_}) m->setZero(dof, dof);
   for (Eigen::VectorXd* v : {&force_plus_, &force_minus_, &velocity_, &step_rhs_, &delta_, &mean_rate_}) {
     v->setZero(dof);
   }
-  perturbed_.setZero(StateLayout::size(links));
+  perturbed_.setZero(StateLayout::size(links, body));
   lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(dof);
 }
 
@@ -84,6 +85,13 @@ bool SemiImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_cond
     x.segment<3>(StateLayout::axis(k)) = turned;
     x(StateLayout::twist(k)) += h * twistRate(omega, axis);
     x.segment<3>(StateLayout::omega(k)) = omega;
+  }
+  if (f.model().body().active) {
+    // The ROV body's angular acceleration at the step's mean tip acceleration (denseJointForces ran
+    // finishRovBody with it), explicitly; its new angular velocity (body frame) turns the attitude.
+    const Eigen::Vector3d body_omega = x.segment<3>(StateLayout::bodyOmega(n)) + h * data.body.acceleration.tail<3>();
+    x.segment<4>(StateLayout::bodyAttitude(n)) = turnedAttitude(x.segment<4>(StateLayout::bodyAttitude(n)), h * body_omega);
+    x.segment<3>(StateLayout::bodyOmega(n)) = body_omega;
   }
   x(StateLayout::dissipated(n)) -= h * loss_power;
   x(StateLayout::workInput(n)) += h * input_power;

@@ -19,7 +19,7 @@ std::unique_ptr<TimeScheme> makeTimeScheme(Integrator integrator, int links, dou
     case Integrator::kRk4:
       return std::make_unique<Rk4Scheme>(StateLayout::size(links, body, axial));
     case Integrator::kSemiImplicit:
-      return std::make_unique<SemiImplicitScheme>(links);
+      return std::make_unique<SemiImplicitScheme>(links, body);
     case Integrator::kImplicit:
       return std::make_unique<LinearImplicitScheme>(links, rho_infinity, body, axial);
   }

@@ -13,9 +13,14 @@ namespace cable_dynamics {
 /// forces (springs, dampers, drag, coupling) with respect to small rotations of each link and to the
 /// angular velocities; then the orientations advance with the new velocities. The Jacobians cost 12n
 /// evaluations of the O(n) forces and the dense solve O(n^3): a reference for stiff cables, not fast.
+/// An ROV body (load.mode body) rides on the tip as its 3x3 mass and bias in the forces and the mass
+/// matrix (rov_body.h); its own rotation takes the angular acceleration the step's mean tip acceleration
+/// gives, explicitly (symplectic Euler: the new angular velocity turns the attitude), as the implicit
+/// scheme treats it (linear_implicit.cpp).
 class SemiImplicitScheme : public TimeScheme {
  public:
-  explicit SemiImplicitScheme(int links);
+  /// `body`: the state carries an ROV body's attitude and angular velocity (StateLayout::kBody).
+  SemiImplicitScheme(int links, bool body);
 
   bool advance(ChainDynamics& dynamics, const EndConditions& ends, double t, double h, Eigen::VectorXd& x) override;
   bool balancesEnergy() const override { return false; }
