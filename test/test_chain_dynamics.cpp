@@ -68,6 +68,21 @@ Eigen::VectorXd omegaRateFromPaper(const Eigen::VectorXd& q, const Eigen::Vector
   return out;
 }
 
+/// `p` with its formulation set to `formulation`.
+CableParams formulated(CableParams p, Formulation formulation) {
+  p.simulation.formulation = formulation;
+  return p;
+}
+
+/// Ends with the base displaced, moving and accelerating (paper frame) [m, m/s, m/s^2].
+EndInputs movingBase() {
+  EndInputs ends;
+  ends.base_position = Eigen::Vector3d(0.1, -0.2, 0.05);
+  ends.base_velocity = Eigen::Vector3d(0.3, 0.1, -0.2);
+  ends.base_acceleration = Eigen::Vector3d(-0.5, 0.8, 1.1);
+  return ends;
+}
+
 void expectSameAccelerations(const CableParams& params, unsigned seed) {
   for (bool recursive : {false, true}) {
     SCOPED_TRACE(recursive ? "recursive formulation" : "dense (paper) formulation");
@@ -140,14 +155,8 @@ TEST(ChainDynamics, RecursiveAndDenseFormulationsAgreeWithEveryForce) {
                                          "load={mass: 3.0, volume: 0.001, mode: attached, drag_area: 0.2, added_mass: 1.5}",
                                          "cable.stiffness={model: bending, elevation: 2.0, torsion: 0.3}",
                                          "cable.damping={elevation: 0.2, torsion: 0.05}"});
-    CableParams dense_params = p, recursive_params = p;
-    dense_params.simulation.formulation = Formulation::kPaper;
-    recursive_params.simulation.formulation = Formulation::kRecursive;
-    ChainDynamics dense(dense_params), recursive(recursive_params);
-    EndInputs ends;
-    ends.base_position = Eigen::Vector3d(0.1, -0.2, 0.05);
-    ends.base_velocity = Eigen::Vector3d(0.3, 0.1, -0.2);
-    ends.base_acceleration = Eigen::Vector3d(-0.5, 0.8, 1.1);
+    ChainDynamics dense(formulated(p, Formulation::kPaper)), recursive(formulated(p, Formulation::kRecursive));
+    EndInputs ends = movingBase();
     ends.load_coupled = true;
     ends.target_position = Eigen::Vector3d(2.0, 1.0, 4.0);
     ends.target_velocity = Eigen::Vector3d(0.2, 0.0, 0.1);
@@ -186,13 +195,8 @@ TEST(ChainDynamics, RecursiveAndDenseFormulationsAgreeWithAnRovBody) {
                                        "linear_damping: [4.03, 6.22, 5.18, 0.07, 0.07, 0.07], "
                                        "quadratic_damping: [18.18, 21.66, 36.99, 1.55, 1.55, 1.55]}}",
                                        "cable.stiffness={model: bending, bending_rigidity: 0.5, torsional_rigidity: 0.2}"});
-  CableParams dense_params = p, recursive_params = p;
-  dense_params.simulation.formulation = Formulation::kPaper;
-  recursive_params.simulation.formulation = Formulation::kRecursive;
-  ChainDynamics dense(dense_params), recursive(recursive_params);
-  EndInputs ends;
-  ends.base_velocity = Eigen::Vector3d(0.3, 0.1, -0.2);
-  ends.base_acceleration = Eigen::Vector3d(-0.5, 0.8, 1.1);
+  ChainDynamics dense(formulated(p, Formulation::kPaper)), recursive(formulated(p, Formulation::kRecursive));
+  EndInputs ends = movingBase();
   ends.body_thrust << 12.0, -5.0, 3.0, 0.4, -0.2, 0.6;
   const int n = 6, attitude = StateLayout::bodyAttitude(n), spin = StateLayout::bodyOmega(n);
   for (unsigned seed = 1; seed <= 5; ++seed) {

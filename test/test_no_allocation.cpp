@@ -22,6 +22,7 @@
 
 #include "cable_dynamics/simulation/cable_simulator.h"
 #include "cable_dynamics/params/config_loader.h"
+#include "light_tether_rov.h"
 
 // glibc's allocator under its exported internal names (GLIBC_2.2.5): what the replacements forward to.
 extern "C" {
@@ -246,18 +247,7 @@ TEST(NoAllocation, RovBodyWithStationKeepingAndThrust) {
   // load.mode body: the body's terms in every evaluation, the station keeper's pose and wrench before each
   // step, a thrust command between steps; RK4, the implicit step, the semi-implicit step, and RK4 on the
   // paper's dense formulation.
-  CableParams p = loadConfigString(R"(
-cable: {links: 8, length: 16.0, diameter: 0.01, mass_per_length: 0.1, stiffness: {model: bending, bending_rigidity: 0.5}}
-load: {mass: 11.5, volume: 0.0114, mode: body, attachment: [-0.2, 0.0, 0.1],
-       body: {inertia: [0.16, 0.16, 0.16], added_mass: [5.5, 12.7, 14.57, 0.12, 0.12, 0.12],
-              linear_damping: [4.0, 6.2, 5.2, 0.07, 0.07, 0.07], quadratic_damping: [18.0, 21.7, 37.0, 1.5, 1.5, 1.5],
-              center_of_buoyancy: [0.0, 0.0, 0.02],
-              station_keeping: {position_gain: [17, 25, 26], velocity_gain: [34, 50, 52], attitude_gain: [0, 0, 0.3],
-                                rate_gain: [0, 0, 0.5], max_force: 90.0, max_torque: 10.0}}}
-fluid: {density: 1025.0, current: [0.3, 0.1, 0.0]}
-initial: {elevation: 0.3}
-simulation: {dt: 0.002}
-)");
+  CableParams p = loadConfigString(std::string(cable_dynamics_test::kLightTetherRov) + "simulation: {dt: 0.002}\n");
   for (const char* integrator : {"rk4", "implicit", "semi_implicit", "rk4 (paper)"}) {
     SCOPED_TRACE(integrator);
     const std::string name = integrator;

@@ -100,7 +100,8 @@ struct SimulationSnapshot {
 /// Outcome of one step.
 struct StepReport {
   bool ok = true;
-  int substeps = 1;     ///< > 1 when the step was retried in smaller pieces after diverging
+  int substeps = 1;     ///< > 1 when the step was retried in smaller pieces after diverging (a
+                        ///< start-up's planned pieces, CableSimulator::kStartupPieces, are not counted)
   std::string message;  ///< why the step failed (time and state), empty when ok
 };
 
@@ -128,6 +129,9 @@ class CableSimulator {
  public:
   /// The most pieces a step is split into before it counts as diverged.
   static constexpr int kMaxSubsteps = 64;
+  /// The first step from a new state (a reset, setState, an equilibrium) is taken in this many pieces with
+  /// RK4 (a start-up, not a retry: StepReport::substeps stays 1 and retriedSteps() does not count it).
+  static constexpr int kStartupPieces = 4;
 
   /// Throws ConfigError (a std::invalid_argument) when checkSimulatorInputs() refuses `params` (a
   /// dt beyond RK4's reach, the paper model's azimuth or torsion springs, a broken rule between keys),
@@ -286,6 +290,9 @@ class CableSimulator {
   double refused_energy_ = 0.0, refused_scale_ = 0.0;
   /// The energy balance at the present state and time, evaluated afresh.
   EnergyBalance balanceNow();
+  /// A new state: the balance's references, the URDF's frame hints and the scheme's reused stage are
+  /// forgotten, and the next step is a start-up (kStartupPieces).
+  void startAfresh();
   /// The configured deployment: the drum's slots stowed, the winch at the configured length.
   void deployConfigured();
   /// After an accepted step: the winch moves on and adds or removes a link when its link leaves its band.
@@ -320,6 +327,7 @@ class CableSimulator {
   double energy_drift_ = 0.0;           ///< [-]
   double energy_rise_ = 0.0;            ///< [-], schemes not judged by the balance
   long retried_steps_ = 0;
+  int startup_pieces_ = kStartupPieces;  ///< pieces of the next step if it is the first from a new state
   double largest_tension_ = 0.0;  ///< [N]
   long snaps_ = 0;
   std::vector<char> slack_;  ///< (n) each link slack at the last step's end (axial elasticity)
