@@ -199,6 +199,7 @@ TEST(ChainDynamics, RecursiveAndDenseFormulationsAgreeWithAnRovBody) {
   EndInputs ends = movingBase();
   ends.body_thrust << 12.0, -5.0, 3.0, 0.4, -0.2, 0.6;
   const int n = 6, attitude = StateLayout::bodyAttitude(n), spin = StateLayout::bodyOmega(n);
+  double largest[6] = {};  // over the seeds, relative: see the print below
   for (unsigned seed = 1; seed <= 5; ++seed) {
     Eigen::VectorXd q, qd, x;
     randomState(n, seed, q, qd);
@@ -209,26 +210,26 @@ TEST(ChainDynamics, RecursiveAndDenseFormulationsAgreeWithAnRovBody) {
     ChainOutputs a, b;
     ASSERT_TRUE(dense.evaluate(x, ends, a));
     ASSERT_TRUE(recursive.evaluate(x, ends, b));
-    EXPECT_LT((a.omega_rate - b.omega_rate).cwiseAbs().maxCoeff(), 1e-9 * a.omega_rate.cwiseAbs().maxCoeff()) << seed;
-    EXPECT_LT((a.tension - b.tension).cwiseAbs().maxCoeff(), 1e-9 * a.tension.cwiseAbs().maxCoeff()) << seed;
-    EXPECT_LT((a.load_force - b.load_force).norm(), 1e-9 * a.load_force.norm()) << seed;
     Eigen::VectorXd rate_a(x.size()), rate_b(x.size());
     ASSERT_TRUE(dense.derivative(x, ends, rate_a));
     ASSERT_TRUE(recursive.derivative(x, ends, rate_b));
+    const auto apart = [](const auto& u, const auto& v) { return (u - v).cwiseAbs().maxCoeff() / u.cwiseAbs().maxCoeff(); };
     // The body's attitude rate and angular acceleration, and the balance's rates (the body's fluid losses
     // and thrust power in them).
-    EXPECT_LT((rate_a.segment<7>(attitude) - rate_b.segment<7>(attitude)).cwiseAbs().maxCoeff(),
-              1e-9 * rate_a.segment<7>(attitude).cwiseAbs().maxCoeff()) << seed;
     const int dissipated = StateLayout::dissipated(n), work = StateLayout::workInput(n);
-    EXPECT_NEAR(rate_a(dissipated), rate_b(dissipated), 1e-9 * std::abs(rate_a(dissipated))) << seed;
-    EXPECT_NEAR(rate_a(work), rate_b(work), 1e-9 * std::abs(rate_a(work))) << seed;
-    if (seed == 1) {
-      std::cout << "[ body ] largest angular acceleration " << a.omega_rate.cwiseAbs().maxCoeff() << " rad/s^2, apart by "
-                << (a.omega_rate - b.omega_rate).cwiseAbs().maxCoeff() << "; body's angular acceleration "
-                << rate_a.segment<3>(spin).transpose() << " rad/s^2, apart by "
-                << (rate_a.segment<3>(spin) - rate_b.segment<3>(spin)).cwiseAbs().maxCoeff() << "\n";
-    }
+    const double seen[] = {apart(a.omega_rate, b.omega_rate), apart(a.tension, b.tension), apart(a.load_force, b.load_force),
+                           apart(rate_a.segment<7>(attitude), rate_b.segment<7>(attitude)),
+                           std::abs(rate_a(dissipated) - rate_b(dissipated)) / std::abs(rate_a(dissipated)),
+                           std::abs(rate_a(work) - rate_b(work)) / std::abs(rate_a(work))};
+    for (int i = 0; i < 6; ++i) largest[i] = std::max(largest[i], seen[i]);
   }
+  std::cout << "[ body ] relative differences, largest over the seeds: angular accelerations " << largest[0]
+            << ", tensions " << largest[1] << ", load force " << largest[2] << ", body's rates " << largest[3]
+            << ", dissipation rate " << largest[4] << ", work rate " << largest[5] << "\n";
+  // Round-off of two different sums of the same terms (the largest angular acceleration is 8e3 rad/s^2).
+  // Measured: 7.3e-12, 3.1e-12, 3.6e-12, 8.8e-13, 3.4e-13, 1.6e-12; bounds 6-9x above.
+  const double bounds[] = {5e-11, 2e-11, 2e-11, 5e-12, 3e-12, 1e-11};
+  for (int i = 0; i < 6; ++i) EXPECT_LT(largest[i], bounds[i]) << i;
 }
 
 TEST(ChainDynamics, HangingCableCarriesTheWeightBelow) {
