@@ -248,14 +248,21 @@ TEST(NoAllocation, RovBodyWithStationKeepingAndThrust) {
   // step, a thrust command between steps; RK4, the implicit step, the semi-implicit step, and RK4 on the
   // paper's dense formulation.
   CableParams p = loadConfigString(std::string(cable_dynamics_test::kLightTetherRov) + "simulation: {dt: 0.002}\n");
-  for (const char* integrator : {"rk4", "implicit", "semi_implicit", "rk4 (paper)"}) {
-    SCOPED_TRACE(integrator);
-    const std::string name = integrator;
-    const bool rk4 = name.rfind("rk4", 0) == 0;
-    p.simulation.integrator = rk4 ? Integrator::kRk4 : name == "implicit" ? Integrator::kImplicit : Integrator::kSemiImplicit;
-    p.simulation.formulation = name == "rk4 (paper)" ? Formulation::kPaper : Formulation::kRecursive;
-    // The semi-implicit step diverges on this light tether from 2 ms with the thrust step (MODEL.md section 6).
-    p.simulation.dt = rk4 ? 0.0005 : name == "implicit" ? 0.01 : 0.001;
+  struct Scheme {
+    const char* name;
+    Integrator integrator;
+    Formulation formulation;
+    double dt;  ///< [s]
+  };
+  // The semi-implicit step diverges on this light tether from 2 ms with the thrust step (MODEL.md section 6).
+  for (const Scheme& scheme : {Scheme{"rk4", Integrator::kRk4, Formulation::kRecursive, 0.0005},
+                               Scheme{"implicit", Integrator::kImplicit, Formulation::kRecursive, 0.01},
+                               Scheme{"semi_implicit", Integrator::kSemiImplicit, Formulation::kRecursive, 0.001},
+                               Scheme{"rk4 (paper)", Integrator::kRk4, Formulation::kPaper, 0.0005}}) {
+    SCOPED_TRACE(scheme.name);
+    p.simulation.integrator = scheme.integrator;
+    p.simulation.formulation = scheme.formulation;
+    p.simulation.dt = scheme.dt;
     CableSimulator sim(p);
     ASSERT_TRUE(sim.step().ok);
     AllocationGuard guard;

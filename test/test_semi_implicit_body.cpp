@@ -24,17 +24,16 @@ std::vector<Eigen::Matrix3Xd> linkEnds(const std::string& simulation, long& retr
   std::vector<Eigen::Matrix3Xd> out;
   SimulationSnapshot s;
   const long steps = std::lround(10.0 / sim.dt()), every = std::lround(0.5 / sim.dt());
-  retried = 0;
   for (long i = 1; i <= steps; ++i) {
     const StepReport r = sim.step();
     EXPECT_TRUE(r.ok) << simulation << " at t = " << sim.time();
     if (!r.ok) break;
-    if (r.substeps > 1) ++retried;
     if (i % every == 0) {
       sim.snapshot(s);
       out.push_back(s.chain.ends);
     }
   }
+  retried = sim.retriedSteps();
   return out;
 }
 

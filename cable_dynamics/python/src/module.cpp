@@ -115,7 +115,8 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
       .def_static("from_dict", &fromDict, "config"_a, "overrides"_a = std::vector<std::string>{},
                   "From a dict of the config file's keys (checked the same way).")
       .def("step", &PythonSimulator::step, "steps"_a = 1, py::call_guard<py::gil_scoped_release>(),
-           "Advances `steps` time steps of dt; RuntimeError when a step fails. Returns the substeps taken.")
+           "Advances `steps` time steps of dt; RuntimeError when a step fails. Returns the substeps taken (1 per step\n"
+           "that was not retried: RK4's start-up pieces of a first step are not counted).")
       .def_property_readonly("time", &PythonSimulator::time, "[s]")
       .def_property_readonly("dt", &PythonSimulator::dt, "[s]")
       .def_property_readonly("links", &PythonSimulator::links, "n (every slot with a winch)")
