@@ -161,8 +161,7 @@ TEST(StaticFriction, BelowTheFrictionAngleTheChainHoldsForTenMinutesWithEitherIn
   // creeps at v_r tan(theta) / mu = 7.3 mm/s (test_seabed): 1 mm in 0.14 s.
   // The steps: RK4 at 2 ms (four times its recommendation, which assumes the chain falls freely in air and
   // whips: it lands after 0.01 m; the landing retries a few steps in substeps, the 10 minutes on the bed
-  // none), the implicit step at its recommended 10 ms (its landing puts 3 times the scale's energy in,
-  // with or without static friction: judged over the 10 minutes only).
+  // none), the implicit step at its recommended 10 ms (its landing puts energy in: docs/MODEL.md section 6).
   const double mu = 0.5;
   for (const char* integrator : {"rk4", "implicit"}) {
     SCOPED_TRACE(integrator);
@@ -181,6 +180,10 @@ TEST(StaticFriction, BelowTheFrictionAngleTheChainHoldsForTenMinutesWithEitherIn
     // the 4 J the chain's weight does landing).
     EXPECT_LT(std::abs(r.balance_watched), 1e-3);
     if (rk4) EXPECT_LT(std::abs(r.balance), 1e-2);  // measured 1.2e-3 J with the landing, of 4.5 J dissipated
+    // The implicit step's landing at 10 ms: measured 1.96 J of 6.4 J booked as dissipated (the stiff contact
+    // spring engaged between the step's two stages); 23.0 J of 27.5 J while the stages booked the seabed's
+    // losses at their start velocities (h c / m about 5 there: seven times what the damper takes out).
+    if (!rk4) EXPECT_LT(std::abs(r.balance), 6.0);
   }
   // The same 60 s without static friction: the regularized law's creep, what the test guards against.
   const SlopeRun creeping = runOnTheSlope(chainOnASlope(20.0, mu, ", breakout: 0.0", {"simulation.dt=0.002"}), 5.0, 60.0);
@@ -215,8 +218,9 @@ TEST(StaticFriction, AboveTheFrictionAngleTheChainSlidesAsCoulombWithEitherInteg
     EXPECT_NEAR(moved / (0.5 * a), 1.0, 0.03);  // measured +1.5 % (RK4) and +0.2 % (implicit)
     EXPECT_EQ(s.chain.seabed.stuck_length, 0.0);  // sliding: no anchor holds
     // The balance closes: RK4 to its step's error (measured 9e-7 of the dissipated energy), the implicit
-    // step to second order in dt (measured 0.55 % at 2 ms).
-    EXPECT_LT(std::abs(s.total_energy - energy), (rk4 ? 1e-5 : 0.03) * s.dissipated_energy);
+    // step to 4.9e-5 at 2 ms now that its stages book the friction's losses at the velocities they solved
+    // it at (0.55 % before: the friction's damper below v_r, mu N / (m v_r) = 400/s, is stiff at 2 ms).
+    EXPECT_LT(std::abs(s.total_energy - energy), (rk4 ? 1e-5 : 5e-4) * s.dissipated_energy);
   }
 }
 

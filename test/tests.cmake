@@ -99,6 +99,9 @@ target_link_libraries(test_implicit_recursion cable_dynamics_core ${GTEST_MAIN_L
 catkin_add_gtest(test_implicit_scheme test/test_implicit_scheme.cpp)
 target_link_libraries(test_implicit_scheme cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 target_compile_definitions(test_implicit_scheme PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+# Its booking of the seabed's losses against the first law.
+catkin_add_gtest(test_implicit_contact_losses test/test_implicit_contact_losses.cpp)
+target_link_libraries(test_implicit_contact_losses cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
 # Multibody reference: MuJoCo from Debian (libmujoco-dev).
 # (Debian's mujocoConfig.cmake names /usr/include/libqhull_r, which the package does not install, so the

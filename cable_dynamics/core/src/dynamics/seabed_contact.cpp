@@ -111,11 +111,12 @@ CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactCon
   return dissipation;
 }
 
-/// The contact of every deployed link and of the load at the kinematics in `data`. Adds the forces to
-/// `links` and `load_external` when given (the hot path: the data's own), fills `report` when given.
-/// Returns the dissipated power [W].
+/// The contact of every deployed link and of the load at the kinematics in `data`, each point's velocity
+/// shifted by `shift` when given. Adds the forces to `links` and `load_external` when given (the hot path:
+/// the data's own), fills `report` when given. Returns the dissipated power [W].
 CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data, LinkBlocks* links,
-                                  Eigen::Vector3d* load_external, SeabedReport* report) {
+                                  Eigen::Vector3d* load_external, SeabedReport* report,
+                                  const ContactVelocityShift* shift = nullptr) {
   const SeabedContactConstants& c = model.seabedContact();
   const int n = model.links(), first = data.deployed.firstLink();
   double dissipation = 0.0, arc_before = 0.0;
@@ -140,11 +141,17 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
       if (k < first || k >= n || l <= 0.0) continue;
       const double share = l / c.points;
       const ContactLaw law = c.linkLaw(k, share);
-      const Vec3 base = block.base_pos[i], velocity = block.base_vel[i], axis = block.u[i], rate = block.axis_rate[i];
+      const Vec3 base = block.base_pos[i], axis = block.u[i];
+      Vec3 velocity = block.base_vel[i], rate = block.axis_rate[i];
+      if (shift) {
+        velocity = velocity + toVec3(shift->base->col(k));
+        rate = rate + cross(toVec3(shift->omega->col(k)), axis);
+      }
       Vec3 force{0.0, 0.0, 0.0}, moment{0.0, 0.0, 0.0};
       const double* anchors = data.anchors.of(k);
       if (flat_kernel) {
         dissipation += flatLinkContact(c, law, l, base, velocity, axis, rate, anchors, force, moment);
+        if (!links) continue;
         LinkBlock& target = links->block(b);
         target.force.set(i, target.force[i] + force);
         target.moment.set(i, target.moment[i] + moment);
@@ -200,7 +207,8 @@ CABLE_HOT_PATH double contactPass(const ChainModel& model, const ChainData& data
     PointContact contact;
     if (contactPlace(c.bed, toVec3(data.tip_position), {0.0, 0.0, 0.0}, place)) {
       place.offset = data.anchors.loadOffset(data.tip_position);
-      contactForce(c.loadLaw(), place, toVec3(data.tip_velocity), contact);
+      const Eigen::Vector3d velocity = shift ? Eigen::Vector3d(data.tip_velocity + shift->tip) : data.tip_velocity;
+      contactForce(c.loadLaw(), place, toVec3(velocity), contact);
       if (load_external) *load_external += toEigen(contact.force);
       dissipation += contact.dissipation;
       if (report) {
@@ -252,6 +260,12 @@ void placeContactAnchors(const ChainModel& model, ChainData& data, bool slide, i
       data.anchors.load = data.tip_position;
     }
   }
+}
+
+CABLE_HOT_PATH double seabedContactDissipation(const ChainModel& model, const ChainData& data,
+                                              const ContactVelocityShift& shift) {
+  if (!model.seabedContact().enabled()) return 0.0;
+  return contactPass(model, data, nullptr, nullptr, nullptr, &shift);
 }
 
 void reportSeabedContact(const ChainModel& model, const ChainData& data, SeabedReport& report) {

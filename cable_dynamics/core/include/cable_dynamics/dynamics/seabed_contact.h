@@ -103,6 +103,24 @@ struct SeabedReport {
 /// a block of eight links wholly above the shallowest depth costs one comparison.
 void addSeabedContact(const ChainModel& model, ChainData& data);
 
+/// The velocity change at which an implicit step's stage takes the contact's dampers and friction: its
+/// W-method solves the stage with the forces at v + dv (the linearized damping times the stage's own
+/// velocity change), not at the stage's v. Per link, the base end's dv [m/s] and the angular velocity's
+/// dw [rad/s] (3 x n each, columns by link); the load's dv [m/s].
+struct ContactVelocityShift {
+  const Eigen::Matrix3Xd* base = nullptr;
+  const Eigen::Matrix3Xd* omega = nullptr;
+  Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+};
+
+/// The seabed's dissipated power [W] at the kinematics in `data` with every contact point moving at its
+/// velocity plus `shift` (the positions and the anchors as they are), nothing added to any force. The
+/// implicit step books its stages' losses with it: the dissipation at the stage's start velocity
+/// over-counts a stiff contact damper that stops a point within the step (a chain landing in air at
+/// 10 ms, h c / m about 5: 7 times the kinetic energy it took; docs/MODEL.md section 6). O(n), no
+/// allocation.
+double seabedContactDissipation(const ChainModel& model, const ChainData& data, const ContactVelocityShift& shift);
+
 /// The same contact at the kinematics in `data`, for the outputs: forces per link, grounded length,
 /// touchdown, penetration, energy (allocates `report` on first use; not the hot path).
 void reportSeabedContact(const ChainModel& model, const ChainData& data, SeabedReport& report);

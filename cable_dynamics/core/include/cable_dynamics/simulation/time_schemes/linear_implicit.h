@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "cable_dynamics/dynamics/seabed_contact.h"
 #include "cable_dynamics/dynamics/stiff_articulated_body.h"
 #include "cable_dynamics/simulation/time_schemes/time_scheme.h"
 
@@ -52,7 +53,10 @@ class LinearImplicitScheme : public TimeScheme {
   struct StagePower {
     double input, dissipative;
   };
-  StagePower stagePower(const ChainModel& model, const ChainData& data, const EndInputs& ends) const;
+  /// At the stage just solved; the seabed's losses at the velocities the stage took its dampers at
+  /// (`contact_shift`: v + dv, see ContactVelocityShift).
+  StagePower stagePower(const ChainModel& model, const ChainData& data, const EndInputs& ends,
+                        const ContactVelocityShift& contact_shift) const;
 
   double gamma_;
   bool tensions_known_ = false;  ///< the solver holds the previous step's second stage's Jacobians and tensions
@@ -61,6 +65,9 @@ class LinearImplicitScheme : public TimeScheme {
   // (3 x n) per link: w_n, then stage 2's rphi [rad/s, then rad]; stage 1's kphi1 [rad], kw1 [rad/s], the base
   // end's displacement [m] and velocity change [m/s]; the stage-2 right-hand side's rotations and translations.
   Eigen::Matrix3Xd omega_, turn1_, spin1_, shift1_, push1_, rotation_, translation_;
+  /// (3 x n) the velocity change at which a stage takes the seabed's dampers, per link: the base end's
+  /// [m/s] and the angular velocity's [rad/s] (ContactVelocityShift).
+  Eigen::Matrix3Xd contact_base_shift_, contact_omega_shift_;
   /// The ROV body (load.mode body) is stepped as a link is: its rotation vector and angular velocity in its
   /// own frame, with only its inertia in W (its own forces are slow beside the cable's: explicit).
   bool body_ = false;
