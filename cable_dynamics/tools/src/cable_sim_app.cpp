@@ -156,11 +156,12 @@ int runCableSim(int argc, const char* const* argv, std::ostream& out, std::ostre
   err << stable.limit << " s; " << stable.mode << ")";
   if (params.simulation.integrator == Integrator::kImplicit) {
     err << "; implicit: recommended dt " << stable.implicit_recommended << " s (" << stable.implicit_mode << ")"
-        << (sim.dt() > stable.implicit_recommended ? "  (dt is larger: less accurate, still stable)" : "") << "\n";
+        << (aboveShownStep(sim.dt(), stable.implicit_recommended) ? "  (dt is larger: less accurate, still stable)" : "") << "\n";
   } else {
-    const bool past_whip = sim.dt() > stable.recommended && sim.dt() <= stable.limit / 2.0;
+    const bool above = aboveShownStep(sim.dt(), stable.recommended);
+    const bool past_whip = above && sim.dt() <= stable.limit / 2.0;
     err << (past_whip ? "  (dt is larger: steps may be retried where the chain whips)"
-                      : sim.dt() > stable.recommended ? "  (dt is larger: expect substeps)" : "")
+                      : above ? "  (dt is larger: expect substeps)" : "")
         << "\n";
   }
 

@@ -33,6 +33,10 @@ struct StableStep {
   std::string implicit_mode;  ///< the mode that sets it, or "the 10 ms cap"
 };
 
+/// Whether `dt` [s] is above the step `bound` [s] as messages print it (6 significant digits, rounded to
+/// nearest, so up to 5e-7 of it above): a dt copied from a message is not above the step it names.
+inline bool aboveShownStep(double dt, double bound) { return dt > bound * (1.0 + 1e-6); }
+
 /// Bounds each fast mode's eigenvalues as the roots of lambda^2 + c lambda + k = 0 with c and k per
 /// unit inertia below Gershgorin's rows, and takes the step that keeps all of them inside RK4's stability
 /// region (its reach: 2.83 on the imaginary axis, 2.785 on the real one, 2.62 at 125 degrees): each
