@@ -161,7 +161,7 @@ TEST(StaticFriction, BelowTheFrictionAngleTheChainHoldsForTenMinutesWithEitherIn
   // creeps at v_r tan(theta) / mu = 7.3 mm/s (test_seabed): 1 mm in 0.14 s.
   // The steps: RK4 at 2 ms (four times its recommendation, which assumes the chain falls freely in air and
   // whips: it lands after 0.01 m; the landing retries a few steps in substeps, the 10 minutes on the bed
-  // none), the implicit step at its recommended 10 ms (its landing puts energy in: docs/MODEL.md section 6).
+  // none), the implicit step at its recommended 10 ms (its landing retries a few steps in pieces too).
   const double mu = 0.5;
   for (const char* integrator : {"rk4", "implicit"}) {
     SCOPED_TRACE(integrator);
@@ -180,10 +180,12 @@ TEST(StaticFriction, BelowTheFrictionAngleTheChainHoldsForTenMinutesWithEitherIn
     // the 4 J the chain's weight does landing).
     EXPECT_LT(std::abs(r.balance_watched), 1e-3);
     if (rk4) EXPECT_LT(std::abs(r.balance), 1e-2);  // measured 1.2e-3 J with the landing, of 4.5 J dissipated
-    // The implicit step's landing at 10 ms: measured 1.96 J of 6.4 J booked as dissipated (the stiff contact
-    // spring engaged between the step's two stages); 23.0 J of 27.5 J while the stages booked the seabed's
-    // losses at their start velocities (h c / m about 5 there: seven times what the damper takes out).
-    if (!rk4) EXPECT_LT(std::abs(r.balance), 6.0);
+    // The implicit step's landing at 10 ms: measured 3.0e-3 J with 4.50 J dissipated (RK4: 4.45 J); bound
+    // 1.5e-2 J (5x). It was 23.0 J of 27.5 J while the stages booked the seabed's losses at their start
+    // velocities (h c / m about 5 there: seven times what the damper takes out), and 1.96 J with the stages'
+    // own velocities but the landing steps taken whole (the stiff contact spring engaged between the two
+    // stages puts energy in; those steps are now retried in pieces: docs/MODEL.md section 6).
+    if (!rk4) EXPECT_LT(std::abs(r.balance), 1.5e-2);
   }
   // The same 60 s without static friction: the regularized law's creep, what the test guards against.
   const SlopeRun creeping = runOnTheSlope(chainOnASlope(20.0, mu, ", breakout: 0.0", {"simulation.dt=0.002"}), 5.0, 60.0);

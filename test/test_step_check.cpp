@@ -22,14 +22,14 @@ TEST(StepCheck, ToleranceDoesNotGrowWithTheAccumulatedDissipation) {
   before.dissipated = after.dissipated = -1e6;
   before.value = 10.0;
   after.value = 10.5;
-  EXPECT_EQ(judgeEnergy(before, after, limits), StepVerdict::kEnergyCreated);
+  EXPECT_EQ(judgeEnergy(before, after, limits.energy_tolerance), StepVerdict::kEnergyCreated);
   // What the step itself dissipates does count (its own flow's round-off): 0.5 J against 100 J of
   // mechanical energy and a 1e4 J flow in this step is 5e-5 of the scale, accepted.
   after.dissipated = before.dissipated + 1e4;
-  EXPECT_EQ(judgeEnergy(before, after, limits), StepVerdict::kAccepted);
+  EXPECT_EQ(judgeEnergy(before, after, limits.energy_tolerance), StepVerdict::kAccepted);
   // Energy taken out is never refused.
   after.value = before.value - 50.0;
-  EXPECT_EQ(judgeEnergy(before, after, limits), StepVerdict::kAccepted);
+  EXPECT_EQ(judgeEnergy(before, after, limits.energy_tolerance), StepVerdict::kAccepted);
 }
 
 TEST(StepCheck, JudgingChangesNothing) {

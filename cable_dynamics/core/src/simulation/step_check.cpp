@@ -42,11 +42,11 @@ StepVerdict judgeStep(const Eigen::VectorXd& x, int n, const StepLimits& limits,
   return StepVerdict::kAccepted;
 }
 
-StepVerdict judgeEnergy(const EnergyBalance& before, const EnergyBalance& after, const StepLimits& limits) {
+StepVerdict judgeEnergy(const EnergyBalance& before, const EnergyBalance& after, double tolerance) {
   const double flows = std::abs(after.dissipated - before.dissipated) + std::abs(after.work - before.work);
   const double scale = std::max(before.mechanical, after.mechanical) + flows + 1e-9;
   if (!std::isfinite(after.value)) return StepVerdict::kNotFinite;
-  return after.value - before.value > limits.energy_tolerance * scale ? StepVerdict::kEnergyCreated
+  return after.value - before.value > tolerance * scale ? StepVerdict::kEnergyCreated
                                                                        : StepVerdict::kAccepted;
 }
 

@@ -283,11 +283,14 @@ class CableSimulator {
   void couplingPort(const EndInputs& ends, SimulationSnapshot& out) const;
   /// One piece of a step, of length h: the scheme's advance, the projection of the axes, the judgement.
   bool advance(double h);
+  /// Whether the balance from `before` to `after` rose by at most `tolerance` of its scale; records the
+  /// refusal otherwise.
+  bool acceptEnergy(const EnergyBalance& before, const EnergyBalance& after, double tolerance);
   /// Why advance() last refused a step (a verdict of step_check.h, or the check that failed; static text,
   /// no allocation in the step), for the message of a step that diverged even in substeps; with "energy
-  /// created", the energy it created [J] and the scale it was judged against [J].
+  /// created", the energy it created [J], the scale it was judged against [J] and the tolerance.
   const char* refusal_ = "";
-  double refused_energy_ = 0.0, refused_scale_ = 0.0;
+  double refused_energy_ = 0.0, refused_scale_ = 0.0, refused_tolerance_ = 0.0;
   /// The energy balance at the present state and time, evaluated afresh.
   EnergyBalance balanceNow();
   /// A new state: the balance's references, the URDF's frame hints and the scheme's reused stage are

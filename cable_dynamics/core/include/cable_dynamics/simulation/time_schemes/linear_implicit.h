@@ -41,6 +41,9 @@ class LinearImplicitScheme : public TimeScheme {
   /// The next first stage linearizes afresh (its geometric stiffness from the external loads) instead of
   /// reusing the last second stage's Jacobians (a reset or a changed input).
   void forget() override { tensions_known_ = false; }
+  /// Its balance closes to second order (the stages' mean powers): a rise beyond
+  /// StepLimits::linear_energy_tolerance in one step is an event within it.
+  double riseTolerance(const StepLimits& limits) const override { return limits.linear_energy_tolerance; }
   /// Its stages evaluate the rates afresh every step; the Jacobian it reuses does not read the thrust.
   void forgetRates() override {}
 

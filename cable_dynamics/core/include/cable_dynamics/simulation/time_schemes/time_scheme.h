@@ -4,6 +4,7 @@
 ///        MuJoCo's integrators and MoorDyn's time schemes are): one interface, one file each, chosen by
 ///        the Integrator enum.
 
+#include <limits>
 #include <memory>
 
 #include <Eigen/Core>
@@ -11,6 +12,7 @@
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 #include "cable_dynamics/params/cable_params.h"
 #include "cable_dynamics/simulation/end_conditions.h"
+#include "cable_dynamics/simulation/step_check.h"
 
 namespace cable_dynamics {
 
@@ -28,6 +30,11 @@ class TimeScheme {
   /// true when the scheme's energy balance holds to its order, so that a step that creates energy has
   /// gone unstable (RK4); false for the semi-implicit scheme, whose power terms are first order.
   virtual bool balancesEnergy() const = 0;
+  /// For a scheme that does not (balancesEnergy() false): the rise of the energy balance in one step,
+  /// relative to its scale (step_check.h), beyond which the step is retried in pieces; infinity where the
+  /// balance is only followed. The semi-implicit step books its powers at the step's start (first order):
+  /// a start from rest in a flow reads as a rise of all the kinetic energy it gains, at any step.
+  virtual double riseTolerance(const StepLimits& /*limits*/) const { return std::numeric_limits<double>::infinity(); }
 
   /// Evaluates x' at the end state x of a step (inputs `ends`), leaving its kinematics in the dynamics'
   /// data for the energy check. RK4 keeps that x' as the next step's first stage (the "first same as
