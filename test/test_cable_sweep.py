@@ -290,12 +290,14 @@ def test_diverged_and_seabed_cases_equal_cable_sim(configs, tmp_path):
     # start stalls (the statics' seabed continuation, 2026-12-03: the simulator's verdict, cable_sim's too);
     # in a 0.5 m/s current along x it runs, its slack on the bottom (a touchdown in the summary). That run
     # diverged at 0.068 s until the twist's 4 pi holonomy jump was fixed (joint_geometry.h), and this test
-    # used it as its diverged case. The diverged case is now MoorDyn's jumper (bench/moordyn/lines) at an
-    # implicit step of 50 ms on a spring anchor (1e8 N/m, 1e5 N s/m, as the line had before its anchor was
-    # held exactly), where the step is unstable on its stiff bending (a runaway angular velocity at 0.15 s
-    # even in 64 substeps): the row of a failed run carries the summary of the samples it has, as
-    # cable_sim's CSV does. (Held exactly, the same step runs to the end with its energy balance 98 % up:
-    # unreliable, not diverged.)
+    # used it as its diverged case. The next one, MoorDyn's jumper at an implicit step of 50 ms on a stiff
+    # spring anchor (a runaway angular velocity at 0.15 s even in 64 substeps), now runs to the end: the
+    # implicit step retries in pieces a step whose balance rose (issue 27), and that run is reported
+    # unreliable. The diverged case is now rov_tether.yaml at 25 links in air, its ROV started 60 m above
+    # the hanging tip (a 5000 N/m coupling yanking a 2 kg tip with 300 kN: an input nothing could follow),
+    # at RK4's stability limit: it diverges at 0.038 s even in 64 substeps; the same tether with its ROV at
+    # the tip runs. The row of a failed run carries the summary of the samples it has, as cable_sim's CSV
+    # does.
     with open(os.path.join(REPO, "config", "tms_tether.yaml")) as f:
         (configs / "tms_tether.yaml").write_text(f.read())
     sweep = write_sweep(configs / "tms.yaml", "config: tms_tether.yaml\nduration: 0.3\naxes:\n"
@@ -308,19 +310,20 @@ def test_diverged_and_seabed_cases_equal_cable_sim(configs, tmp_path):
     assert rows[1]["max_touchdown"] != "", rows[1]
     check_against_cable_sim(rows, ["fluid.current"], configs / "tms_tether.yaml", 0.3, tmp_path)
 
-    with open(os.path.join(REPO, "bench", "moordyn", "lines", "jumper.yaml")) as f:
-        (configs / "jumper.yaml").write_text(f.read())
-    sweep = write_sweep(configs / "jumper_sweep.yaml", "config: jumper.yaml\nduration: 0.3\naxes:\n"
-                        "  simulation.integrator: [implicit]\n  simulation.dt: [0.01, 0.05]\n"
-                        "  load.anchor: [spring]\n  load.coupling.stiffness: [1.0e8]\n  load.coupling.damping: [1.0e5]\n")
-    done = subprocess.run(sweep_cmd(sweep, tmp_path / "out_jumper", "--workers", "2"), capture_output=True,
+    with open(os.path.join(REPO, "config", "rov_tether.yaml")) as f:
+        (configs / "rov_tether.yaml").write_text(f.read())
+    sweep = write_sweep(configs / "yank_sweep.yaml", "config: rov_tether.yaml\nduration: 0.3\naxes:\n"
+                        "  fluid.density: [0.0]\n  cable.links: [25]\n  initial.mode: [angles]\n"
+                        "  simulation.integrator: [rk4]\n  simulation.dt: [0.0096]\n"
+                        "  load.motion.offset: [[0.0, 0.0, 0.0], [0.0, 0.0, 60.0]]\n")
+    done = subprocess.run(sweep_cmd(sweep, tmp_path / "out_yank", "--workers", "2"), capture_output=True,
                           text=True, timeout=300)
     assert done.returncode == 0, done.stderr
-    rows = sorted(read(tmp_path / "out_jumper" / "results.csv"), key=lambda r: int(r["case"]))
+    rows = sorted(read(tmp_path / "out_yank" / "results.csv"), key=lambda r: int(r["case"]))
     assert [r["status"] for r in rows] == ["ok", "diverged"], rows
     assert "diverged even in 64 substeps" in rows[1]["reason"] and rows[1]["max_top_tension"] != "", rows[1]
-    check_against_cable_sim(rows, ["simulation.integrator", "simulation.dt", "load.anchor", "load.coupling.stiffness",
-                                   "load.coupling.damping"], configs / "jumper.yaml", 0.3, tmp_path)
+    check_against_cable_sim(rows, ["fluid.density", "cable.links", "initial.mode", "simulation.integrator", "simulation.dt",
+                                   "load.motion.offset"], configs / "rov_tether.yaml", 0.3, tmp_path)
 
 
 def test_killed_worker_loses_no_case(configs, scheduler_cluster, tmp_path):

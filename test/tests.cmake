@@ -181,7 +181,8 @@ target_link_libraries(test_force_modules cable_dynamics_core ${GTEST_MAIN_LIBRAR
 # reactions, the statics' tip on the anchor, a mooring chain's hold at each integrator's recommended step.
 catkin_add_gtest(test_exact_anchor test/test_exact_anchor.cpp)
 target_link_libraries(test_exact_anchor cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
-target_compile_definitions(test_exact_anchor PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+target_compile_definitions(test_exact_anchor PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"
+                           CABLE_BENCH_DIR="${CMAKE_CURRENT_SOURCE_DIR}/bench")
 
 # Neighbouring links cannot fold through each other (forces/fold_stop.h; issue 27 item 4).
 catkin_add_gtest(test_fold_stop test/test_fold_stop.cpp)

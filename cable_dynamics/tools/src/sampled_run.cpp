@@ -71,10 +71,10 @@ int SampledRun::judge(int status, std::vector<std::string>& lines, std::string* 
     line << retried_ << " of " << done << " steps (more than " << 100 * kMaxRetriedFraction
          << " %) needed substeps: the result is not reliable at dt = " << sim_.dt() << " s; ";
     if (params_.simulation.integrator == Integrator::kImplicit) {
-      // The implicit step is retried where the balance rose by more than 2e-3 of its scale in one
-      // step: an event within it (a point landing on the bed's stiff spring, a whip in air).
-      line << "the energy balance rose in too many single steps (events within a step: points landing on the "
-              "bed, a whip in air); take a smaller dt (recommended "
+      // The implicit step is retried where the balance rose by more than 2e-3 of its scale in one step: an
+      // event within it (a point landing on the bed's stiff spring) or a mode it cannot hold at this dt.
+      line << "the energy balance rose in too many single steps (an event within a step, such as a point "
+              "landing on the bed, or a mode the step cannot hold at this dt); take a smaller dt (recommended "
            << stable.implicit_recommended << " s)";
     } else if (aboveShownStep(sim_.dt(), stable.recommended)) {
       line << "use dt <= " << stable.recommended << " s or simulation.integrator: implicit (dt "

@@ -121,7 +121,7 @@ void StaticNewton::applyStep(const StaticState& from, double alpha, StaticState&
 }
 
 bool StaticNewton::solve(StaticState& s, double tolerance, int max_iterations, int& iterations, double& residual,
-                         std::string& why) {
+                         std::string& why, int min_iterations) {
   iterations = 0;
   for (;;) {
     residual = relativeResidual(s);  // also sets F for this iteration
@@ -129,7 +129,7 @@ bool StaticNewton::solve(StaticState& s, double tolerance, int max_iterations, i
       why = "the residual is not finite";
       return false;
     }
-    if (residual < tolerance) {
+    if (residual < tolerance && iterations >= min_iterations) {
       // The dynamics place the links from the axes alone, so a closure error of e [m] reaches the tip
       // as a coupling force k_c e: judge the state with the base ends from the axes and the forces
       // from the tip (force balance and closure then exact, the moments what the dynamics see). Newton

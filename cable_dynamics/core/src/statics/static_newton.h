@@ -22,10 +22,11 @@ class StaticNewton {
   /// The relative residual of s (static_solver.h's criterion).
   double relativeResidual(const StaticState& s);
 
-  /// Newton from s until the relative residual is below `tolerance` or `max_iterations` are taken.
-  /// Returns true when converged; `iterations` counts the iterations taken, `residual` the last
-  /// relative residual; `why` says why not.
-  bool solve(StaticState& s, double tolerance, int max_iterations, int& iterations, double& residual, std::string& why);
+  /// Newton from s until the relative residual is below `tolerance` (after at least `min_iterations`) or
+  /// `max_iterations` are taken. Returns true when converged; `iterations` counts the iterations taken,
+  /// `residual` the last relative residual; `why` says why not.
+  bool solve(StaticState& s, double tolerance, int max_iterations, int& iterations, double& residual, std::string& why,
+             int min_iterations = 0);
 
  private:
   /// Link i's residual scaled by F, F l_i and l_i, the moment on the reference basis (3 x 2).

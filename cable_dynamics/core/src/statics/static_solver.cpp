@@ -142,12 +142,15 @@ bool solveWithoutContact(StaticEquations& eq, StaticNewton& newton, StaticState&
 
 namespace {
 
+/// Newton iterations a warm start (the last sweep's equilibrium) is given before the cold path.
+constexpr int kWarmIterations = 20;
+
 /// The equilibrium with each link's lever l + problem.stretch (rigid links when it is empty).
 /// `reach_target`: the problem's own target (the anchor's reach is checked on it), or one an exact anchor's
 /// sweeps have shifted beyond the anchor by the hold's give (checked on `reach_target`).
 StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& deployed, const CurrentField& current,
-                              const StaticProblem& problem,
-                              const StaticOptions& options, const Eigen::Vector3d* reach_target = nullptr) {
+                              const StaticProblem& problem, const StaticOptions& options,
+                              const Eigen::Vector3d* reach_target = nullptr, StaticState* warm = nullptr) {
   StaticSolution out;
   out.message = refusal(model, deployed, problem, nullptr);
   if (!out.message.empty()) return out;
@@ -161,17 +164,33 @@ StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& de
   s.resize(eq.links());
   StaticNewton newton(eq);
   std::string why;
-  // With a seabed: first the cable as if the bed were not there; where it hangs through the bed, the
-  // bed's springs are ramped up from 1e-4 of their stiffness, lifting it out step by step.
-  if (eq.hasSeabed()) eq.setContactScale(0.0);
-  bool ok = solveWithoutContact(eq, newton, s, options, out, why);
-  if (ok && eq.hasSeabed()) {
-    eq.setContactScale(1.0);
-    if (eq.touchesSeabed(s)) {
-      ok = continuation([&eq](double scale) { eq.setContactScale(scale); }, 1e-4, "seabed contact", newton, s, options,
-                        out.iterations, out.residual, why);
+  bool ok = false;
+  if (warm != nullptr && warm->axis.cols() == eq.links()) {
+    // A later sweep of solveStatics' fixed points: the last sweep's equilibrium, with every spring and the
+    // bed at full strength, is a Newton start one small shift away (the stretches and the hold's target
+    // moved by their fixed points' steps). Where it does not converge within kWarmIterations, the cold path
+    // below starts afresh. At least one iteration: a start already within the tolerance would leave the tip
+    // where it was, and the anchor's secant would read that its target's shift moved nothing.
+    s = *warm;
+    int taken = 0;
+    ok = newton.solve(s, options.tolerance, std::min(kWarmIterations, options.max_iterations), taken, out.residual, why,
+                      1);
+    out.iterations += taken;
+  }
+  if (!ok) {
+    // With a seabed: first the cable as if the bed were not there; where it hangs through the bed, the
+    // bed's springs are ramped up from 1e-4 of their stiffness, lifting it out step by step.
+    if (eq.hasSeabed()) eq.setContactScale(0.0);
+    ok = solveWithoutContact(eq, newton, s, options, out, why);
+    if (ok && eq.hasSeabed()) {
+      eq.setContactScale(1.0);
+      if (eq.touchesSeabed(s)) {
+        ok = continuation([&eq](double scale) { eq.setContactScale(scale); }, 1e-4, "seabed contact", newton, s, options,
+                          out.iterations, out.residual, why);
+      }
     }
   }
+  if (ok && warm != nullptr) *warm = s;
   out.converged = ok;
   out.message = ok ? "" : why;
   writeSolution(model, deployed, eq, s, out);
@@ -216,9 +235,10 @@ StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& depl
   StaticSolution out;
   Eigen::Matrix3d secant = Eigen::Matrix3d::Identity();  // d tip / d target, Broyden's estimate
   Eigen::Vector3d last_shift = Eigen::Vector3d::Zero(), last_tip = Eigen::Vector3d::Zero();
+  statics::StaticState warm;  // the last sweep's equilibrium: the next one's start
   for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
     const int iterations = out.iterations;
-    out = solveAtStretch(model, deployed, current, sweep_problem, options, &problem.target_position);
+    out = solveAtStretch(model, deployed, current, sweep_problem, options, &problem.target_position, &warm);
     out.iterations += iterations;
     out.elastic_sweeps = model.axial() ? sweep : 0;
     if (!out.converged) return out;
