@@ -51,11 +51,11 @@ bool limpStart(const StaticEquations& eq, StaticState& s, std::string& why) {
   return true;
 }
 
-/// Newton with a scale ramped up from `first` to 1 by `growth` a step (the bend springs' or the seabed's:
-/// `set_scale`), each step's solution the next one's start, a step that fails retried at the geometric mean.
+/// Newton with a scale ramped up from `first` to 1 (the bend springs' or the seabed's: `set_scale`),
+/// each step's solution the next one's start, a step that fails retried at the geometric mean.
 template <typename SetScale>
-bool continuation(SetScale set_scale, double first, double growth, const char* what, StaticNewton& newton,
-                  StaticState& s, const StaticOptions& options, int& iterations, double& residual, std::string& why) {
+bool continuation(SetScale set_scale, double first, const char* what, StaticNewton& newton, StaticState& s,
+                  const StaticOptions& options, int& iterations, double& residual, std::string& why) {
   StaticState saved = s;
   double done = 0.0, next = first;
   for (int attempt = 0; attempt < 60; ++attempt) {
@@ -67,7 +67,7 @@ bool continuation(SetScale set_scale, double first, double growth, const char* w
       if (next == 1.0) return true;
       saved = s;
       done = next;
-      next = std::min(1.0, next * growth);
+      next = std::min(1.0, next * 4.0);
     } else {
       s = saved;
       next = done > 0.0 ? std::sqrt(done * next) : next * 0.1;
@@ -131,8 +131,8 @@ bool solveWithoutContact(StaticEquations& eq, StaticNewton& newton, StaticState&
     if (!ok) {
       eq.setStiffnessScale(0.0);
       limpStart(eq, s, why);
-      ok = continuation([&eq](double scale) { eq.setStiffnessScale(scale); }, 1e-3, 4.0, "stiffness", newton, s,
-                        options, out.iterations, out.residual, why);
+      ok = continuation([&eq](double scale) { eq.setStiffnessScale(scale); }, 1e-3, "stiffness", newton, s, options,
+                        out.iterations, out.residual, why);
     }
   }
   return ok;
@@ -141,10 +141,6 @@ bool solveWithoutContact(StaticEquations& eq, StaticNewton& newton, StaticState&
 }  // namespace
 
 namespace {
-
-/// The seabed contact's continuation grows its scale 10 times a step (4 before: MoorDyn's chains took 48,
-/// 46 and 44 Newton iterations, now 41, 37 and 36; the mooring chain 40, now 33; tms_tether 117, now 101).
-constexpr double kContactGrowth = 10.0;
 
 /// Newton iterations a warm start (the last sweep's equilibrium) is given before the cold path.
 constexpr int kWarmIterations = 20;
@@ -189,8 +185,8 @@ StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& de
     if (ok && eq.hasSeabed()) {
       eq.setContactScale(1.0);
       if (eq.touchesSeabed(s)) {
-        ok = continuation([&eq](double scale) { eq.setContactScale(scale); }, 1e-4, kContactGrowth, "seabed contact",
-                          newton, s, options, out.iterations, out.residual, why);
+        ok = continuation([&eq](double scale) { eq.setContactScale(scale); }, 1e-4, "seabed contact", newton, s, options,
+                          out.iterations, out.residual, why);
       }
     }
   }
