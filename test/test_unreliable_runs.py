@@ -3,6 +3,7 @@ beyond RK4's reach at start, naming simulation.dt and the step the cable needs, 
 with substeps and exiting 0. Before this, both commands below exited 0: the first after 13,528 of
 20,000 steps needed substeps, with the total energy drifting from -3579 J to -2814 J and sampled top
 tensions of 0.24 N and 88.7 N against about 95 N; the second reset 2,166 times in 25 s."""
+import math
 import os
 import re
 import subprocess
@@ -138,7 +139,6 @@ def test_the_printed_recommended_step_is_within_itself_and_a_run_beyond_its_esti
 
 def slope_config(tmp_path, density):
     """test/chain_on_a_slope.h's chain (20 m, 2 kg/m, pinned) 1 cm above a 20-degree bed, implicit at 10 ms."""
-    import math
     slope = math.tan(math.radians(20.0))
     low, high = 0.01 - 100.0 * slope, 0.01 + 100.0 * slope
     path = tmp_path / "slope.yaml"
