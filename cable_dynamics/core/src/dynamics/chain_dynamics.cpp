@@ -141,7 +141,7 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
     xdot(StateLayout::twist(k)) = block.twist_rate[i];
     xdot.segment<3>(StateLayout::omega(k)) << block.omega_rate.x[i], block.omega_rate.y[i], block.omega_rate.z[i];
   }
-  xdot(StateLayout::dissipated(n)) = -lossPower(model_, data_, data_.added_mass_power);
+  xdot(StateLayout::dissipated(n)) = -lossPower(model_, data_, data_.added_mass_power, data_.contact_dissipation);
   xdot(StateLayout::workInput(n)) = data_.input_power;
   const bool body = model_.body().active;
   if (body) {

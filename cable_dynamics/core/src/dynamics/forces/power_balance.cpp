@@ -36,10 +36,10 @@ double endsInputPower(const ChainModel& model, const ChainData& data, const EndI
   return power;
 }
 
-double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power) {
+double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power, double contact_dissipation) {
   const double body = model.body().active ? data.body.fluid_power : 0.0;  // after the solve (finishRovBody)
   return data.drag_power + added_mass_power + damperPower(model, data) + jointHoldPower(data) -
-         data.contact_dissipation + body - axialLoss(model, data);
+         contact_dissipation + body - axialLoss(model, data);
 }
 
 }  // namespace cable_dynamics

@@ -84,15 +84,12 @@ LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainMod
   }
   const Eigen::Vector3d tip_acc = data.tip_known_acc + solver_.tipDelta();
   added_power -= (model.load().inertia - model.load().mass) * tip_acc.dot(data.tip_velocity);
-  // The seabed's losses at the velocities the stage solved its dampers at, in place of those at the stage's
-  // start velocity (lossPower's): for a damper c on a mass m the stages then book what the step takes out of
-  // the motion within 0.2 % at h c / m = 1 and 5 % at 5, where the start velocity books 22 % and 7.4 times
-  // too much (docs/MODEL.md section 6; test_implicit_scheme).
-  double losses = lossPower(model, data, added_power);
-  if (model.seabedContact().enabled()) {
-    losses += data.contact_dissipation - seabedContactDissipation(model, data, contact_shift);
-  }
-  return {endsInputPower(model, data, ends, solver_.baseForce()), losses};
+  // The seabed's losses at the velocities the stage solved its dampers at, not at the stage's start
+  // velocity (data.contact_dissipation): for a damper c on a mass m the stages then book what the step takes
+  // out of the motion within 0.2 % at h c / m = 1 and 5 % at 5, where the start velocity books 22 % and 7.4
+  // times too much (docs/MODEL.md section 6; test_implicit_contact_losses).
+  const double contact = seabedContactDissipation(model, data, contact_shift);
+  return {endsInputPower(model, data, ends, solver_.baseForce()), lossPower(model, data, added_power, contact)};
 }
 
 bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,
@@ -167,9 +164,12 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   }
   const Eigen::Vector3d tip_push1 = h * solver_.tipDelta();
   const Eigen::Vector3d tip_shift1 = h * tip_rate1 + g * h * tip_push1;
-  // Stage 1 takes its dampers at v_n + g kw1 (W a1 = G(x_n) - g h D a1).
-  contact_base_shift_ = g * push1_;
-  contact_omega_shift_ = g * spin1_;
+  // Stage 1 takes its dampers at v_n + g kw1 (W a1 = G(x_n) - g h D a1); only the seabed's read it.
+  const bool seabed = model.seabedContact().enabled();
+  if (seabed) {
+    contact_base_shift_ = g * push1_;
+    contact_omega_shift_ = g * spin1_;
+  }
   const StagePower power1 =
       stagePower(model, data, start, ContactVelocityShift{&contact_base_shift_, &contact_omega_shift_, g * tip_push1});
   if (!stage_.allFinite()) return false;
@@ -211,7 +211,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
   solver_.solve(model, data, gh, gh * gh);
   if (body_) finishRovBody(model.body(), data.tip_known_acc + solver_.tipDelta(), f.data().body);
   // Stage 2 takes its dampers at v_1 - 2 g kw1 + g kw~2 (W a2 = G(x_n + k1) + 2 g D kw1 - g h D a2).
-  for (int k = first; k < n; ++k) {
+  for (int k = first; seabed && k < n; ++k) {
     contact_base_shift_.col(k) = g * (h * solver_.link(k).delta_acc - 2.0 * push1_.col(k));
     contact_omega_shift_.col(k) = g * (h * solver_.link(k).angular_acc - 2.0 * spin1_.col(k));
   }

@@ -74,7 +74,7 @@ bool SemiImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_cond
   denseJointForces(f.model(), f.data(), mean_rate_);
   // The balance's powers from the one place every scheme takes them (forces/power_balance.h): with the
   // seabed's dissipation and the turning clamps' work, which a sum of its own here had left out.
-  const double loss_power = lossPower(f.model(), data, data.added_mass_power);
+  const double loss_power = lossPower(f.model(), data, data.added_mass_power, data.contact_dissipation);
   const double input_power = endsInputPower(f.model(), data, ends, data.joint_force.col(f.deployed().firstLink()));
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector3d omega = data.links.get(&LinkBlock::omega, k) + delta_.segment<3>(3 * k);

@@ -25,8 +25,10 @@ double endsInputPower(const ChainModel& model, const ChainData& data, const EndI
 
 /// The power of the forces that take energy out, at the kinematics and loads in `data` [W] (<= 0 for a
 /// physical state): the drag (data.drag_power), the fluid's added mass at the scheme's own accelerations
-/// (`added_mass_power`), the joint dampers and the seabed's dampers and friction (data.contact_dissipation,
-/// counted >= 0 there). The dissipated energy grows at minus this.
-double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power);
+/// (`added_mass_power`), the joint dampers and the seabed's dampers and friction (`contact_dissipation`
+/// [W], >= 0: data.contact_dissipation at the evaluated velocities, or the implicit step's at the
+/// velocities its stage solved the dampers at, seabedContactDissipation). The dissipated energy grows at
+/// minus this.
+double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power, double contact_dissipation);
 
 }  // namespace cable_dynamics
