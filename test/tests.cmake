@@ -157,6 +157,10 @@ target_compile_definitions(test_formulations PRIVATE CABLE_CONFIG_DIR="${CMAKE_C
 catkin_add_gtest(test_winch test/test_winch.cpp)
 target_link_libraries(test_winch cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 
+# Issue 23: a winch paying out a stretching cable (unstretched length; the line pull at the drum).
+catkin_add_gtest(test_winch_stretch test/test_winch_stretch.cpp)
+target_link_libraries(test_winch_stretch cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
 # Issue 27 item 1: the line pull through the links the winch adds (rov_dive.yaml and a stiff tether).
 catkin_add_gtest(test_winch_line_pull test/test_winch_line_pull.cpp)
 target_link_libraries(test_winch_line_pull cable_dynamics_core ${GTEST_MAIN_LIBRARIES})

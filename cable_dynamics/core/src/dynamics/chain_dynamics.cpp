@@ -141,7 +141,8 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
     xdot(StateLayout::twist(k)) = block.twist_rate[i];
     xdot.segment<3>(StateLayout::omega(k)) << block.omega_rate.x[i], block.omega_rate.y[i], block.omega_rate.z[i];
   }
-  xdot(StateLayout::dissipated(n)) = -lossPower(model_, data_, data_.added_mass_power, data_.contact_dissipation);
+  xdot(StateLayout::dissipated(n)) =
+      -lossPower(model_, data_, data_.added_mass_power, data_.contact_dissipation, axialLoss(model_, data_));
   xdot(StateLayout::workInput(n)) = data_.input_power;
   const bool body = model_.body().active;
   if (body) {
@@ -150,6 +151,10 @@ CABLE_HOT_PATH void ChainDynamics::writeRates(Eigen::VectorXd& xdot) const {
     xdot.segment<3>(StateLayout::bodyOmega(n)) = terms.acceleration.tail<3>();
   }
   if (model_.axial()) {
+    if (first > 0) {  // the stretches sit in the moving tail: the last slot stowed keeps its zeros
+      xdot(StateLayout::stretch(n, body, first - 1)) = 0.0;
+      xdot(StateLayout::stretchRate(n, body, first - 1)) = 0.0;
+    }
     for (int k = first; k < n; ++k) {
       const LinkBlock& block = data_.links.of(k);
       const int i = LinkBlocks::lane(k);
@@ -225,7 +230,7 @@ bool ChainDynamics::matchTipVelocity(Eigen::VectorXd& x, const EndInputs& ends) 
 
 void ChainDynamics::forwardPass(const Eigen::VectorXd& x, const EndInputs& ends, Stage stage, bool with_dampers) {
   applyEnds(ends);
-  computeAxialTensions(model_, data_, x);  // the stretches: the kinematics read them
+  computeAxialTensions(model_, data_, x, ends.winch ? ends.winch_speed : 0.0);  // the kinematics read them
   computeKinematics(model_, data_, x, ends);
   computeBodyTerms(x, ends);
   if (stage == Stage::kKinematics) return;

@@ -84,9 +84,6 @@ void checkAxialElasticity(const CableParams& p) {
     throw ConfigError("simulation.integrator", integratorName(p.simulation.integrator),
                       "rk4 or implicit with cable.axial_stiffness (the semi-implicit step does not carry the stretch)");
   }
-  if (p.winch.enabled) {
-    throw ConfigError("winch", "enabled", "no winch with cable.axial_stiffness (paying out a stretching cable: not yet)");
-  }
   // Under its own weight alone (the cable's submerged weight, or in air its weight; no load), the top of
   // a hanging cable carries W = sum w_k l_k: a strain W / EA above 0.5 is refused.
   const LinkProperties links = deriveLinkProperties(p);

@@ -279,12 +279,15 @@ void CableSimulator::watchStretches(bool count_snaps) {
   if (!model.axial()) return;
   const int n = links();
   const bool body = hasBody();
-  for (int k = dynamics_.deployed().firstLink(); k < n; ++k) {
+  const int first = dynamics_.deployed().firstLink();
+  const double winch_speed = hasWinch() ? ends_.winch().motion().speed : 0.0;
+  for (int k = first; k < n; ++k) {
     if (model.stretchLocked(k)) continue;
     const int i = LinkBlocks::lane(k);
     const double s = x_(StateLayout::stretch(n, body, k)), rate = x_(StateLayout::stretchRate(n, body, k));
     const LinkConstants& c = dynamics_.deployed().of(k);
-    largest_tension_ = std::max(largest_tension_, AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, rate));
+    const double damped = k == first ? AxialSpring::dampedRate(s, rate, c.length[i], winch_speed) : rate;
+    largest_tension_ = std::max(largest_tension_, AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, damped));
     // A snap: a link shorter than unstretched by more than 0.1 % of its length that comes taut. The
     // margin keeps a taut line's light links, ringing about s = 0 after a snap, from counting each crossing.
     if (s < -kClearlySlack * c.length[i]) {

@@ -123,6 +123,7 @@ struct alignas(64) LinkBlock {
   // All zero with rigid links.
   double stretch[kBlockLanes];       ///< s [m]
   double stretch_rate[kBlockLanes];  ///< s' [m/s]
+  double damped_rate[kBlockLanes];   ///< the rate its damper reads, AxialSpring::dampedRate [m/s]
   double axial_tension[kBlockLanes]; ///< the stretch's spring and damper, tension only [N]
   double axial_loss[kBlockLanes];    ///< power its damper takes out [W]
   // External loads (external_loads.cpp, joint_torques.cpp).

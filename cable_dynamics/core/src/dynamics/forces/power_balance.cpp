@@ -31,15 +31,19 @@ double endsInputPower(const ChainModel& model, const ChainData& data, const EndI
   const Vec3 exit_velocity = data.links.of(first).base_vel[LinkBlocks::lane(first)];
   double power = base_force.dot(toEigen(exit_velocity)) + data.coupling.dot(data.tip_velocity) +
                  data.clamp_torque.dot(data.clamp_omega) + data.tip_clamp_torque.dot(data.tip_clamp_omega);
-  if (ends.winch) power += ends.winch_speed * paidOutEnergyPerLength(data, exit_velocity);
+  if (ends.winch) {
+    power += ends.winch_speed * paidOutEnergyPerLength(data, exit_velocity);
+    if (model.axial()) power += winchStrainPower(data, ends.winch_speed);
+  }
   if (model.body().active) power += data.body.thrust_power;  // after the solve (finishRovBody)
   return power;
 }
 
-double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power, double contact_dissipation) {
+double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power, double contact_dissipation,
+                 double axial_loss) {
   const double body = model.body().active ? data.body.fluid_power : 0.0;  // after the solve (finishRovBody)
   return data.drag_power + added_mass_power + damperPower(model, data) + jointHoldPower(data) -
-         contact_dissipation + body - axialLoss(model, data);
+         contact_dissipation + body - axial_loss;
 }
 
 }  // namespace cable_dynamics

@@ -5,6 +5,7 @@
 
 #include "cable_dynamics/dynamics/chain_dynamics.h"
 #include "cable_dynamics/dynamics/fluid.h"
+#include "cable_dynamics/dynamics/forces/axial_spring.h"
 #include "cable_dynamics/dynamics/forces/coupling.h"
 #include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/link_rates.h"
@@ -55,7 +56,8 @@ double gammaFor(double rho_infinity) {
 LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity, bool body, bool axial)
     : gamma_(gammaFor(rho_infinity)), solver_(links), body_(body), axial_(axial) {
   stage_.setZero(StateLayout::size(links, body, axial));
-  for (Eigen::VectorXd* v : {&stretch_rate_, &stretch_spin1_, &stretch_turn1_, &stretch_rate2_, &stretch_scratch_, &stretch_zero_}) {
+  for (Eigen::VectorXd* v : {&stretch_rate_, &stretch_spin1_, &stretch_turn1_, &stretch_rate2_, &stretch_scratch_, &stretch_zero_,
+                             &stretch_shift_}) {
     v->setZero(axial ? links : 0);
   }
   for (Eigen::Matrix3Xd* m : {&omega_, &turn1_, &spin1_, &shift1_, &push1_, &rotation_, &translation_,
@@ -66,7 +68,8 @@ LinearImplicitScheme::LinearImplicitScheme(int links, double rho_infinity, bool 
 
 LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainModel& model, const ChainData& data,
                                                                   const EndInputs& ends,
-                                                                  const ContactVelocityShift& contact_shift) const {
+                                                                  const ContactVelocityShift& contact_shift,
+                                                                  const Eigen::VectorXd& stretch_shift) const {
   // The powers at a stage's state, with its solved accelerations: drag, dampers and added mass taken out;
   // what the base, the coupling and a turning clamp put in. Affine in the accelerations, so the mean of
   // the two stages' is the step's to second order.
@@ -89,7 +92,10 @@ LinearImplicitScheme::StagePower LinearImplicitScheme::stagePower(const ChainMod
   // out of the motion within 0.2 % at h c / m = 1 and 5 % at 5, where the start velocity books 22 % and 7.4
   // times too much (docs/MODEL.md section 6; test_implicit_contact_losses).
   const double contact = seabedContactDissipation(model, data, contact_shift);
-  return {endsInputPower(model, data, ends, solver_.baseForce()), lossPower(model, data, added_power, contact)};
+  // The stretches' dampers likewise (an axial damper of 200 N s on 1 m links of 0.5 kg: h c / m = 4 at
+  // 10 ms; booked at the start rates, a ringing elastic pendulum's balance was first order in h).
+  const double axial = axial_ ? axialLossAtShiftedRates(model, data, stretch_shift) : 0.0;
+  return {endsInputPower(model, data, ends, solver_.baseForce()), lossPower(model, data, added_power, contact, axial)};
 }
 
 bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_conditions, double t, double h,
@@ -160,6 +166,7 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
       stretch_turn1_(k) = h * (stretch_rate_(k) + g * stretch_spin1_(k));
       stage_(StateLayout::stretch(n, body_, k)) += stretch_turn1_(k);
       stage_(StateLayout::stretchRate(n, body_, k)) += stretch_spin1_(k);
+      stretch_shift_(k) = g * stretch_spin1_(k);  // stage 1 solved the dampers at s'_n + g ks'1
     }
   }
   const Eigen::Vector3d tip_push1 = h * solver_.tipDelta();
@@ -171,7 +178,8 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     contact_omega_shift_ = g * spin1_;
   }
   const StagePower power1 =
-      stagePower(model, data, start, ContactVelocityShift{&contact_base_shift_, &contact_omega_shift_, g * tip_push1});
+      stagePower(model, data, start, ContactVelocityShift{&contact_base_shift_, &contact_omega_shift_, g * tip_push1},
+                 stretch_shift_);
   if (!stage_.allFinite()) return false;
   // Stage 2 at x_n + k1 (time t + h), written for k~2 = k2 + 2 k1 so that no mass-matrix product appears:
   // (I - g h A) k~2 = h F(x_n + k1) - 2 g h A k1, i.e. W a2 = G(x_n + k1) + g K (2 kphi1 - rphi2) + 2 g D kw1,
@@ -215,9 +223,13 @@ bool LinearImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_co
     contact_base_shift_.col(k) = g * (h * solver_.link(k).delta_acc - 2.0 * push1_.col(k));
     contact_omega_shift_.col(k) = g * (h * solver_.link(k).angular_acc - 2.0 * spin1_.col(k));
   }
+  for (int k = first; axial_ && k < n; ++k) {  // and stage 2 at s'_1 - 2 g ks'1 + g ks~'2
+    stretch_shift_(k) = g * (h * solver_.link(k).stretch_acc - 2.0 * stretch_spin1_(k));
+  }
   StagePower power2 = stagePower(
       model, data, end,
-      ContactVelocityShift{&contact_base_shift_, &contact_omega_shift_, g * (h * solver_.tipDelta() - 2.0 * tip_push1)});
+      ContactVelocityShift{&contact_base_shift_, &contact_omega_shift_, g * (h * solver_.tipDelta() - 2.0 * tip_push1)},
+      stretch_shift_);
   if (end.load_coupled) {
     // The coupling's power F.v at x_n + k1 is O(h^2) from the step's end, x_n + (k1 + k~2)/2, and with a
     // stiff coupling damper (c / m_tip of hundreds per second) that error, summed over a run, showed as

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "cable_dynamics/dynamics/dense_solver.h"
+#include "cable_dynamics/dynamics/forces/axial_spring.h"
 #include "cable_dynamics/dynamics/forces/power_balance.h"
 #include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/dynamics/rov_body.h"
@@ -74,7 +75,8 @@ bool SemiImplicitScheme::advance(ChainDynamics& f, const EndConditions& end_cond
   denseJointForces(f.model(), f.data(), mean_rate_);
   // The balance's powers from the one place every scheme takes them (forces/power_balance.h): with the
   // seabed's dissipation and the turning clamps' work, which a sum of its own here had left out.
-  const double loss_power = lossPower(f.model(), data, data.added_mass_power, data.contact_dissipation);
+  const double loss_power =
+      lossPower(f.model(), data, data.added_mass_power, data.contact_dissipation, axialLoss(f.model(), data));
   const double input_power = endsInputPower(f.model(), data, ends, data.joint_force.col(f.deployed().firstLink()));
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector3d omega = data.links.get(&LinkBlock::omega, k) + delta_.segment<3>(3 * k);

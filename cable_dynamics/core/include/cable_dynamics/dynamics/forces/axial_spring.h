@@ -22,6 +22,12 @@ struct AxialSpring {
     const double t = k * s + c * rate;
     return s > 0.0 && t > 0.0 ? t : 0.0;
   }
+  /// The rate [m/s] the damper c = c_a / l reads: l times the strain rate, d/dt (s / l) l = s' - s l' / l.
+  /// It is s' but for the winch's link, whose unstretched length l changes at l' (the pay-out speed): a
+  /// link paid out at a steady strain grows its stretch, s' = s l' / l, and its damper must not pull.
+  static double dampedRate(double s, double rate, double length, double length_rate) {
+    return length_rate != 0.0 && length > 0.0 ? rate - s * length_rate / length : rate;
+  }
   /// Strain energy 1/2 k s^2 while stretched [J]: the tension's elastic part has this potential.
   static double energy(double k, double s) { return s > 0.0 ? 0.5 * k * s * s : 0.0; }
   /// The power the tension T takes out beyond the energy it stores [W], >= 0: T s' - k s s' while
@@ -32,11 +38,24 @@ struct AxialSpring {
 };
 
 /// Each link's stretch and rate from the state x into the link blocks, and the tension and loss of the
-/// law above (zeros with rigid links, whose blocks keep zeros). O(n), no allocation.
-void computeAxialTensions(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x);
+/// law above (zeros with rigid links, whose blocks keep zeros); `winch_speed` [m/s] the rate of the first
+/// link's unstretched length (0 without a winch). O(n), no allocation.
+void computeAxialTensions(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x, double winch_speed);
 
 /// The strain energy of every link's stretch at the stretches in `data` [J].
 double axialEnergy(const ChainModel& model, const ChainData& data);
+
+/// What a winch paying out at `winch_speed` [m/s] changes in the strain energy at fixed stretches [W]:
+/// the winch's link's stiffness EA / l falls as its unstretched length l grows, so the same stretch s
+/// holds less energy, 1/2 EA s^2 / l; its rate at fixed s, -v (1/2 EA s^2 / l) / l, is an input to the
+/// energy balance as the paid-out material's own energy is (docs/MODEL.md section 8).
+double winchStrainPower(const ChainData& data, double winch_speed);
+
+/// The power the stretches' dampers take out [W] with each link's stretch rate (and the rate its damper
+/// reads) shifted by shift(k) [m/s] (n entries), the stretches as they are. The implicit step books its
+/// stages' losses with it, at the rates its matrix solved the dampers at (as the seabed's,
+/// seabedContactDissipation): at the stage's start rate a damper with h c / m of several over-counts.
+double axialLossAtShiftedRates(const ChainModel& model, const ChainData& data, const Eigen::VectorXd& shift);
 
 /// The power the stretches' dampers take out [W], >= 0.
 double axialLoss(const ChainModel& model, const ChainData& data);

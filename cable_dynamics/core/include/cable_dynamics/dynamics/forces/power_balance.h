@@ -27,8 +27,10 @@ double endsInputPower(const ChainModel& model, const ChainData& data, const EndI
 /// physical state): the drag (data.drag_power), the fluid's added mass at the scheme's own accelerations
 /// (`added_mass_power`), the joint dampers and the seabed's dampers and friction (`contact_dissipation`
 /// [W], >= 0: data.contact_dissipation at the evaluated velocities, or the implicit step's at the
-/// velocities its stage solved the dampers at, seabedContactDissipation). The dissipated energy grows at
-/// minus this.
-double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power, double contact_dissipation);
+/// velocities its stage solved the dampers at, seabedContactDissipation), and the stretches' dampers
+/// (`axial_loss` [W]: axialLoss, or the implicit step's axialLossAtShiftedRates). The dissipated energy
+/// grows at minus this.
+double lossPower(const ChainModel& model, const ChainData& data, double added_mass_power, double contact_dissipation,
+                 double axial_loss);
 
 }  // namespace cable_dynamics

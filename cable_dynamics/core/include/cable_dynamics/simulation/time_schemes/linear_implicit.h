@@ -57,9 +57,10 @@ class LinearImplicitScheme : public TimeScheme {
     double input, dissipative;
   };
   /// At the stage just solved; the seabed's losses at the velocities the stage took its dampers at
-  /// (`contact_shift`: v + dv, see ContactVelocityShift).
+  /// (`contact_shift`: v + dv, see ContactVelocityShift), the stretches' at their rates shifted by
+  /// `stretch_shift` [m/s] (n; read only with axial elasticity).
   StagePower stagePower(const ChainModel& model, const ChainData& data, const EndInputs& ends,
-                        const ContactVelocityShift& contact_shift) const;
+                        const ContactVelocityShift& contact_shift, const Eigen::VectorXd& stretch_shift) const;
 
   double gamma_;
   bool tensions_known_ = false;  ///< the solver holds the previous step's second stage's Jacobians and tensions
@@ -78,6 +79,8 @@ class LinearImplicitScheme : public TimeScheme {
   /// Axial elasticity (n each): the stretch rates at the step's start [m/s], stage 1's ks'1 = h s''_1
   /// [m/s] and ks1 [m], stage 2's rate term r2 [m] and a scratch vector.
   Eigen::VectorXd stretch_rate_, stretch_spin1_, stretch_turn1_, stretch_rate2_, stretch_scratch_, stretch_zero_;
+  /// The stage's shift of the stretch rates its dampers were solved at, over the start's [m/s] (n).
+  Eigen::VectorXd stretch_shift_;
   Eigen::Vector3d body_turn1_ = Eigen::Vector3d::Zero(), body_spin1_ = Eigen::Vector3d::Zero();
 };
 
