@@ -307,6 +307,33 @@ winch: {max_length: 40.0, max_speed: 2.0, max_acceleration: 100.0, speed: 2.0}
   }
 }
 
+TEST(NoAllocation, WinchPayingOutAStretchingCable) {
+  // Axial elasticity through the links the winch adds and removes (their stretches split and merged).
+  for (const char* integrator : {"rk4", "implicit"}) {
+    SCOPED_TRACE(integrator);
+    CableParams p = loadConfigString(std::string(R"(
+cable: {links: 8, length: 16.0, diameter: 0.03, mass_per_length: 1.0, axial_stiffness: 1.0e6, axial_damping: 100.0}
+load: {mass: 5.0, volume: 0.002, drag_area: 0.1}
+fluid: {density: 1025.0, current: [1.0, 0.2, 0.0]}
+initial: {elevation: 0.3}
+winch: {max_length: 40.0, max_speed: 2.0, max_acceleration: 100.0, speed: 2.0}
+simulation: {dt: 0.0005, integrator: )") + integrator + "}\n");
+    CableSimulator sim(p);
+    ASSERT_TRUE(sim.step().ok);
+    AllocationGuard guard;
+    guard.start();
+    bool ok = true;
+    for (int i = 0; i < 6000; ++i) ok = sim.step().ok && ok;
+    sim.commandWinchSpeed(-2.0);
+    for (int i = 0; i < 6000; ++i) ok = sim.step().ok && ok;
+    const long allocations = guard.stop();
+    EXPECT_TRUE(ok);
+    EXPECT_EQ(allocations, 0) << "heap allocations while paying out and hauling in a stretching cable";
+    EXPECT_GE(sim.linksAdded(), 2);
+    EXPECT_GE(sim.linksRemoved(), 2);
+  }
+}
+
 TEST(NoAllocation, GuardIsActive) {
   // The Eigen guard itself works: an allocation under it aborts (checked in a death test).
   EXPECT_DEATH(
