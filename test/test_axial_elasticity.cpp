@@ -139,9 +139,11 @@ namespace {
 
 /// The snap case below with n links at `integrator` and `dt`: the peak tension at the base [N] and the
 /// snaps counted.
-double snapPeak(int n, const std::string& integrator, double dt, long& snaps, double& largest) {
+double snapPeak(int n, const std::string& integrator, double dt, long& snaps, double& largest,
+                double mass_per_length = 1.0e-4, long* retried = nullptr) {
   std::ostringstream config;
-  config << "cable: {links: " << n << ", length: 10.0, diameter: 0.01, mass_per_length: 1.0e-4, axial_stiffness: 1.0e5, "
+  config << "cable: {links: " << n << ", length: 10.0, diameter: 0.01, mass_per_length: " << mass_per_length
+         << ", axial_stiffness: 1.0e5, "
             "stiffness: {model: bending}}\nload: {mass: 100.0, mode: free}\nfluid: {density: 0.0}\n"
             "initial: {elevation: 0.0, azimuth: 0.0, torsion: 0.0}\nsimulation: {integrator: "
          << integrator << ", dt: " << std::setprecision(17) << dt << "}\n";
@@ -158,6 +160,7 @@ double snapPeak(int n, const std::string& integrator, double dt, long& snaps, do
   }
   snaps = sim.snaps();
   largest = sim.largestTension();
+  if (retried != nullptr) *retried = sim.retriedSteps();
   return peak;
 }
 
@@ -184,15 +187,25 @@ TEST(AxialElasticity, ASnapOntoASlackLinePeaksAtTheEnergyBound) {
   // (at the steps' ends, of the stretches' law) is the peak at the far end of the first link.
   EXPECT_EQ(snaps, 1);
   EXPECT_NEAR(largest, rk4, 1e-3 * rk4);
-  // The implicit step, on one link: the mass on the line's spring alone. With ten light links (1e-4 kg
-  // each, h omega = 300 for their own axial modes at 10 ms) it diverges after the snap, and so it does with
-  // 0.1 kg/m: a linearly implicit step cannot follow a stiff spring that switches on within the step
-  // (docs/MODEL.md section 12, "Limits"). With 1 kg/m (h omega = 30) it holds.
+  // The implicit step, on one link: the mass on the line's spring alone.
   const double implicit = snapPeak(1, "implicit", 0.01, snaps, largest);
   std::cout << "snap, implicit at 10 ms, one link: peak " << implicit << " N, error " << implicit / exact - 1.0 << "\n";
   // Measured: -0.060 %. Bound 0.5 % (8x).
   EXPECT_NEAR(implicit / exact, 1.0, 5e-3);
   EXPECT_EQ(snaps, 1);
+  // On ten links of a light tether (0.01 kg/m: its links' own axial modes at h omega = 30 at 10 ms) the
+  // linearly implicit step puts energy in where a link's stiff spring switches on within the step; the
+  // step's energy check (2e-3 of the scale in one step, docs/MODEL.md section 6) retries that step in
+  // pieces, and the run goes on (before that check it diverged after the snap). Measured: +0.04 % of the
+  // closed form, one step retried; RK4 at 0.02 ms gives +1.85 %, the line's wave stress v sqrt(EA m') that
+  // 10 ms does not resolve (1 ms a link for the wave). With 1e-4 kg/m (h omega = 300) it still diverges,
+  // even in 64 pieces (docs/MODEL.md section 12, "Limits"). Bound: the 2 % (50x; 1.1x of RK4's).
+  long retried = 0;
+  const double light = snapPeak(10, "implicit", 0.01, snaps, largest, 0.01, &retried);
+  std::cout << "snap, implicit at 10 ms, ten links of 0.01 kg/m: peak " << light << " N, error " << light / exact - 1.0
+            << ", " << retried << " steps retried\n";
+  EXPECT_NEAR(light / exact, 1.0, 2e-2);
+  EXPECT_LE(retried, 3);
 }
 
 TEST(AxialElasticity, EnergyIsConservedWithTheStrainEnergyAndBalancedWithItsDamper) {
