@@ -286,13 +286,12 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
       t.stretch_inverse = 1.0 / (u.dot(t.stretch_lin) + cd * t.stretch_damper + ck * t.stretch_spring);
       t.stretch_bias = u.dot(child_pv) + block.axial_tension[i] - t.stretch_extra;
       const Eigen::Vector3d r = t.stretch_inverse * t.stretch_rot, v = t.stretch_inverse * t.stretch_lin;
-      child_rr -= r * t.stretch_rot.transpose();
-      child_rv -= r * t.stretch_lin.transpose();
-      child_vv -= v * t.stretch_lin.transpose();
+      // Rank-one updates in place (symmetric up to rounding in rr and vv: the next symmetrized() takes it).
+      child_rr.noalias() -= r * t.stretch_rot.transpose();
+      child_rv.noalias() -= r * t.stretch_lin.transpose();
+      child_vv.noalias() -= v * t.stretch_lin.transpose();
       child_pr -= t.stretch_bias * r;
       child_pv -= t.stretch_bias * v;
-      child_rr = symmetrized(child_rr);
-      child_vv = symmetrized(child_vv);
     } else {
       t.stretch_inverse = 0.0;  // rigid links, or a locked last stretch
       t.stretch_rot.setZero();
