@@ -278,6 +278,22 @@ TEST(NoAllocation, RovBodyWithStationKeepingAndThrust) {
   }
 }
 
+namespace {
+
+/// Steps `sim` paying out `steps` steps, then hauling in as many, under the allocation guard: the heap
+/// allocations (0 expected) and whether every step was ok; links are added and removed in those steps.
+long allocationsPayingOutAndHaulingIn(CableSimulator& sim, int steps, bool& ok) {
+  AllocationGuard guard;
+  guard.start();
+  ok = true;
+  for (int i = 0; i < steps; ++i) ok = sim.step().ok && ok;
+  sim.commandWinchSpeed(-2.0);
+  for (int i = 0; i < steps; ++i) ok = sim.step().ok && ok;
+  return guard.stop();
+}
+
+}  // namespace
+
 TEST(NoAllocation, WinchPayingOutAndHaulingIn) {
   // Links added and removed at the winch, in the steps where that happens: everything is sized for
   // the longest deployment at start.
@@ -289,21 +305,15 @@ initial: {elevation: 0.3}
 winch: {max_length: 40.0, max_speed: 2.0, max_acceleration: 100.0, speed: 2.0}
 )");
   for (const char* integrator : {"rk4", "implicit"}) {
-  SCOPED_TRACE(integrator);
-  p.simulation.integrator = std::string(integrator) == "rk4" ? Integrator::kRk4 : Integrator::kImplicit;
-  CableSimulator sim(p);
-  ASSERT_TRUE(sim.step().ok);
-  AllocationGuard guard;
-  guard.start();
-  bool ok = true;
-  for (int i = 0; i < 3000; ++i) ok = sim.step().ok && ok;
-  sim.commandWinchSpeed(-2.0);
-  for (int i = 0; i < 3000; ++i) ok = sim.step().ok && ok;
-  const long allocations = guard.stop();
-  EXPECT_TRUE(ok);
-  EXPECT_EQ(allocations, 0) << "heap allocations while paying out and hauling in";
-  EXPECT_GE(sim.linksAdded(), 2);
-  EXPECT_GE(sim.linksRemoved(), 2);
+    SCOPED_TRACE(integrator);
+    p.simulation.integrator = std::string(integrator) == "rk4" ? Integrator::kRk4 : Integrator::kImplicit;
+    CableSimulator sim(p);
+    ASSERT_TRUE(sim.step().ok);
+    bool ok = false;
+    EXPECT_EQ(allocationsPayingOutAndHaulingIn(sim, 3000, ok), 0) << "heap allocations while paying out and hauling in";
+    EXPECT_TRUE(ok);
+    EXPECT_GE(sim.linksAdded(), 2);
+    EXPECT_GE(sim.linksRemoved(), 2);
   }
 }
 
@@ -320,15 +330,10 @@ winch: {max_length: 40.0, max_speed: 2.0, max_acceleration: 100.0, speed: 2.0}
 simulation: {dt: 0.0005, integrator: )") + integrator + "}\n");
     CableSimulator sim(p);
     ASSERT_TRUE(sim.step().ok);
-    AllocationGuard guard;
-    guard.start();
-    bool ok = true;
-    for (int i = 0; i < 6000; ++i) ok = sim.step().ok && ok;
-    sim.commandWinchSpeed(-2.0);
-    for (int i = 0; i < 6000; ++i) ok = sim.step().ok && ok;
-    const long allocations = guard.stop();
+    bool ok = false;
+    EXPECT_EQ(allocationsPayingOutAndHaulingIn(sim, 6000, ok), 0)
+        << "heap allocations while paying out and hauling in a stretching cable";
     EXPECT_TRUE(ok);
-    EXPECT_EQ(allocations, 0) << "heap allocations while paying out and hauling in a stretching cable";
     EXPECT_GE(sim.linksAdded(), 2);
     EXPECT_GE(sim.linksRemoved(), 2);
   }

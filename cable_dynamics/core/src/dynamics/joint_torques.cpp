@@ -4,7 +4,6 @@
 
 #include "cable_dynamics/dynamics/forces/joint_springs.h"
 #include "cable_dynamics/dynamics/forces/tip_clamp.h"
-#include "cable_dynamics/dynamics/hot_path.h"
 #include "cable_dynamics/dynamics/joint_geometry.h"
 #include "cable_dynamics/dynamics/paper_coordinates.h"
 #include "cable_dynamics/dynamics/paper_model.h"
@@ -48,7 +47,7 @@ void paperSpringTorques(const ChainModel& model, ChainData& data, const Eigen::V
 }
 
 /// Joint k couples link k-1 (the base's clamp, LinkProperties::clamp_axis, for k = 0) and link k.
-CABLE_HOT_PATH void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
+void bendingSpringTorques(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
   const LinkProperties& p = data.deployed.properties();
   const LinkBlocks& links = data.links;
   const int first = data.deployed.firstLink();
@@ -167,7 +166,7 @@ double damperPower(const ChainModel& model, const ChainData& data) {
   return power;
 }
 
-CABLE_HOT_PATH double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
+double elasticEnergy(const ChainModel& model, ChainData& data, const Eigen::VectorXd& x) {
   const LinkProperties& p = data.deployed.properties();
   double energy = 0.0;
   if (model.stiffnessModel() == StiffnessModel::kPaper) {

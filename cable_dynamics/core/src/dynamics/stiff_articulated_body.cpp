@@ -48,17 +48,6 @@ namespace {
 
 inline Eigen::Matrix3d symmetrized(const Eigen::Matrix3d& m) { return 0.5 * (m + m.transpose()); }
 
-/// [w]x M, column by column w x M_j: 18 products where a general 3x3 product takes 27.
-inline Eigen::Matrix3d crossColumns(const Eigen::Vector3d& w, const Eigen::Matrix3d& m) {
-  Eigen::Matrix3d out;
-  for (int j = 0; j < 3; ++j) {
-    out(0, j) = w.y() * m(2, j) - w.z() * m(1, j);
-    out(1, j) = w.z() * m(0, j) - w.x() * m(2, j);
-    out(2, j) = w.x() * m(1, j) - w.y() * m(0, j);
-  }
-  return out;
-}
-
 }  // namespace
 
 StiffArticulatedBody::StiffArticulatedBody(int links) : links_(links), contact_(links) {}
@@ -312,14 +301,13 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     const double lever = axial ? t.lever : l;  // base end to far end
     // The outboard part's inertia and bias moved from the far end to the base end: with R = l [u]x,
     // rr' = rr - rv R + R rv^T - R vv R (R rv^T = -(rv R)^T), rv' = rv + R vv, torque' = torque + R force.
-    // R M = [w]x M and M R = -([w]x M^T)^T, w = l u (crossColumns).
-    const Eigen::Vector3d w = lever * u;
-    const Eigen::Matrix3d r_vv = crossColumns(w, child_vv);
-    const Eigen::Matrix3d rv_r = -crossColumns(w, child_rv.transpose()).transpose();
-    Eigen::Matrix3d a_rr = child_rr - rv_r - rv_r.transpose() + crossColumns(w, r_vv.transpose()).transpose();
+    const Eigen::Matrix3d R = lever * skew(u);
+    const Eigen::Matrix3d r_vv = R * child_vv;
+    const Eigen::Matrix3d rv_r = child_rv * R;
+    Eigen::Matrix3d a_rr = child_rr - rv_r - rv_r.transpose() - r_vv * R;
     Eigen::Matrix3d a_rv = child_rv + r_vv;
     Eigen::Matrix3d a_vv = child_vv;
-    Eigen::Vector3d a_pr = child_pr + w.cross(child_pv);
+    Eigen::Vector3d a_pr = child_pr + R * child_pv;
     Eigen::Vector3d a_pv = child_pv;
     // The link's own spatial inertia about its base end: rotation (c1 P + I_P u u^T), coupling h [u]x,
     // translation l A; plus the drag's damping and the geometric stiffness, weighted.
