@@ -48,7 +48,7 @@ double axialEnergy(const ChainModel& model, const ChainData& data);
 /// What a winch paying out at `winch_speed` [m/s] changes in the strain energy at fixed stretches [W]:
 /// the winch's link's stiffness EA / l falls as its unstretched length l grows, so the same stretch s
 /// holds less energy, 1/2 EA s^2 / l; its rate at fixed s, -v (1/2 EA s^2 / l) / l, is an input to the
-/// energy balance as the paid-out material's own energy is (docs/MODEL.md section 8).
+/// energy balance as the paid-out material's own energy is (docs/MODEL.md section 12, "With a winch").
 double winchStrainPower(const ChainData& data, double winch_speed);
 
 /// The power the stretches' dampers take out [W] with each link's stretch rate (and the rate its damper
