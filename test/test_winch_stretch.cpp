@@ -22,8 +22,6 @@ using namespace cable_dynamics;
 
 namespace {
 
-constexpr double kGravity = 9.81;  // [m/s^2], the config's default
-
 /// A 20 m line of `links` links (0.6 kg/m, EA 1e6 N) in air under a 200 kg load, started at its elastic
 /// equilibrium and paid out at 0.5 m/s to 60 m. The axial damper (4e4 N s, damping ratio 0.2-0.3 of the
 /// load's bounce) rings down the winch's start within a few seconds.
@@ -51,7 +49,7 @@ struct Lowered {
 Lowered lower(int links, const std::string& dt) {
   const CableParams p = lowering(links, dt);
   CableSimulator sim(p);
-  const double mass = 200.0, per_length = 0.6, ea = 1.0e6, link = 20.0 / links;
+  const double mass = 200.0, per_length = 0.6, ea = 1.0e6, link = 20.0 / links, g = p.gravity;
   Lowered out;
   SimulationSnapshot snap;
   const long per_second = std::lround(1.0 / sim.dt());
@@ -63,15 +61,15 @@ Lowered lower(int links, const std::string& dt) {
     if (i % per_second != 0 || sim.time() < 10.0) continue;
     sim.snapshot(snap);
     const double l = snap.deployed_length;
-    const double pull = (mass + per_length * l) * kGravity;
-    const double stretch = (mass * kGravity * l + 0.5 * per_length * kGravity * l * l) / ea;
+    const double pull = (mass + per_length * l) * g;
+    const double stretch = (mass * g * l + 0.5 * per_length * g * l * l) / ea;
     const double depth = (snap.chain.ends.col(sim.links()) - snap.chain.ends.col(0)).norm();
     out.pull_error = std::max(out.pull_error, std::abs(snap.line_pull / pull - 1.0));
     const double miss = std::abs(depth - (l + stretch));
     // Each link's own weight is left out of its stretch: m' g l_k^2 / (2 EA) summed, with the winch's link
     // l_w (between 1 and 2.25 links) and the configured ones.
     const double winch = l - (sim.links() - sim.firstLink() - 1) * link;
-    const double lumping = 0.5 * per_length * kGravity * ((l - winch) * link + winch * winch) / ea;
+    const double lumping = 0.5 * per_length * g * ((l - winch) * link + winch * winch) / ea;
     out.beyond = std::max(out.beyond, std::abs(miss - lumping));
     if (miss > out.depth_error) {
       out.depth_error = miss;
@@ -135,6 +133,7 @@ Braked brake(const std::string& integrator, const std::string& dt, double dampin
       "schedule: [{time: 0.0, speed: 1.0}, {time: 20.0, speed: 0.0}]}\n"
       "simulation: {integrator: " + integrator + ", dt: " + dt + "}\n");
   CableSimulator sim(p);
+  const double g = p.gravity;
   Braked out;
   SimulationSnapshot snap;
   while (sim.time() < 23.0 - 0.5 * sim.dt()) {
@@ -161,10 +160,10 @@ Braked brake(const std::string& integrator, const std::string& dt, double dampin
   for (double t = 0.0; t < 3.0; t += 1e-5) {
     dynamic = std::max(dynamic, deceleration / (w * w) * (k * (step(t) - step(t - tau)) + c * (rate(t) - rate(t - tau))));
   }
-  out.closed_form = (mass + per_length * length) * kGravity + dynamic;
+  out.closed_form = (mass + per_length * length) * g + dynamic;
   std::cout << integrator << " at " << dt << " s, axial damping " << damping << " N s (damping ratio " << zeta
             << "): peak line pull " << out.peak << " N, the closed form " << out.closed_form << " N ("
-            << 100.0 * (out.peak / out.closed_form - 1.0) << " %); static " << (mass + per_length * length) * kGravity
+            << 100.0 * (out.peak / out.closed_form - 1.0) << " %); static " << (mass + per_length * length) * g
             << " N" << std::endl;
   return out;
 }
