@@ -371,49 +371,107 @@ GroundedCatenary groundedCatenary(double span, double rise, double length, doubl
 
 }  // namespace
 
-// A 100 m chain-like line (8 kg/m, 0.05 m: w = 58.7 N/m submerged; EA 2e5 N, strain up to 0.9 %) from an
+namespace {
+
+/// The statics of the grounded line below with the given link lengths [m] (their sum is 100 m) and the
+/// fairlead `span` out: the errors of the fairlead's tension and of the anchor's horizontal pull against
+/// the closed form, and the suspended length.
+struct GroundedErrors {
+  double fairlead = 0.0, anchor = 0.0, suspended = 0.0, closed_suspended = 0.0;
+};
+
+GroundedErrors groundedStatics(const std::vector<double>& links, double span) {
+  const double length = 100.0, rise = 20.0, ea = 2.0e5;
+  const double w = (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4.0) * 9.81;
+  const GroundedCatenary exact = groundedCatenary(span, rise, length, w, ea);
+  std::string lengths;
+  for (double l : links) lengths += (lengths.empty() ? "" : ", ") + std::to_string(l);
+  CableSimulator sim(
+      loadConfigString("cable: {links: " + std::to_string(links.size()) + ", link_lengths: [" + lengths +
+                       "], diameter: 0.05, mass_per_length: 8.0, axial_stiffness: 2.0e5, stiffness: {model: paper}}\n"
+                       "load: {mass: 0.001, mode: anchored, motion: {offset: [" + std::to_string(span) + ", 0.0, 80.0]}}\n"
+                       "fluid: {density: 1025.0, drag_normal: 1.2, drag_tangential: 0.0, added_mass: 1.0}\n"
+                       "seabed: {depth: 20.0, stiffness: 1.0e6, damping_ratio: 0.5}\n"
+                       "initial: {mode: equilibrium}\nsimulation: {integrator: implicit, dt: 0.01}\n"),
+      SimulatorUse::kStaticsOnly);
+  SimulationSnapshot s;
+  sim.snapshot(s);
+  GroundedErrors out;
+  out.fairlead = s.chain.base_force.norm() / std::hypot(exact.horizontal, exact.vertical) - 1.0;
+  // The anchor holds the line's horizontal pull H and the share of the last link's weight that the bed
+  // under a continuous line would carry: H is its horizontal part.
+  out.anchor = s.chain.load_force.head<2>().norm() / exact.horizontal - 1.0;
+  out.suspended = length - s.chain.seabed.grounded_length;
+  out.closed_suspended = exact.vertical / w;
+  return out;
+}
+
+}  // namespace
+
+// A 100 m chain-like line (8 kg/m, 0.05 m: w = 58.7 N/m submerged; EA 2e5 N, strain up to 1 %) from an
 // anchor on the bed to a fairlead 20 m above it and 90 m out, 71 m of it on a frictionless, stiff bed
 // (1e6 N/m^2: it rests 8e-5 m deep). The tip carries a 1 g point so that its last link stretches too (a
 // massless anchored tip locks it: MODEL.md section 12). Against the closed form above: the fairlead's
-// tension and the anchor's (H). Measured at n = 25, 50, 100, 200: fairlead -0.28 %, +0.16 %, +0.041 %,
-// +0.027 %; anchor -0.016 %, +0.43 %, +0.11 %, +0.059 %. Not a clean order: the error follows where the
-// touchdown falls within a link (grounded 72.0, 71.5, 71.0, 71.375 m against 71.31 m), the links across it
-// lying partly on the bed, held at their contact points and not along the arc where the catenary leaves
-// it; between n = 50 and 200 it falls 6x (fairlead) and 7x (anchor). The issue's 0.1 % at n = 50 is NOT met
-// (0.16 % and 0.43 %); the fairlead is within it from n = 100, the anchor from n = 200. Without the grounded
-// part (Irvine between two points, above) the same model is within 6.3e-5 at n = 50. Bounds: 3x the
-// measured errors at n = 100 and 200, and a fall of at least 3x from n = 50 to 200.
+// tension and the anchor's H.
+// Equal links, measured at n = 25, 50, 100, 200: fairlead -0.46 %, +0.070 %, +0.0032 %, +0.0064 %; anchor
+// -0.90 %, +0.12 %, +0.0015 %, +0.011 %. No clean order: what is left follows where the touchdown falls
+// within a link (grounded 72.0, 71.5, 71.0, 71.375 m against 71.31 m). A rigid link cannot follow the
+// catenary leaving the bed: the line beyond it sits as if the touchdown were up to half a link off, at
+// heights off by up to the curvature there (w / H = 0.093 1/m) times l^2 / 8, and H moves 0.018 % per mm
+// of the fairlead's height. (Before the links carried their own weight's consistent load the errors had a
+// first-order part too, w l h / (2 EA): +0.16 % / +0.43 % at n = 50.) So the issue's 0.1 % at n = 50 is
+// NOT met with equal links (the anchor 0.12 %); it is with the 50 links placed as a mooring analyst
+// places them: 24 of 1 m down the catenary, 16 of 0.5 m across the touchdown and 10 of 6.8 m on the bed.
+// Over five spans (89 to 91 m, the touchdown moving 4 m within the fine links) those are within 2.9e-4
+// (fairlead) and 5.4e-4 (anchor). Bounds: 3-8x the measured errors at n = 100 and 200 and on the graded
+// line; at n = 50 (equal links) 3.3-4x.
 TEST(AxialElasticity, TheStaticsIsTheElasticCatenaryWithAGroundedPart) {
-  const double length = 100.0, span = 90.0, rise = 20.0, ea = 2.0e5;
-  const double w = (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4.0) * 9.81;
-  const GroundedCatenary exact = groundedCatenary(span, rise, length, w, ea);
-  const double fairlead = std::hypot(exact.horizontal, exact.vertical);
   std::vector<double> top, bottom;
   for (int n : {25, 50, 100, 200}) {
-    CableSimulator sim(
-        loadConfigString("cable: {links: " + std::to_string(n) +
-                         ", length: 100.0, diameter: 0.05, mass_per_length: 8.0, axial_stiffness: 2.0e5, "
-                         "stiffness: {model: paper}}\nload: {mass: 0.001, mode: anchored, "
-                         "motion: {offset: [90.0, 0.0, 80.0]}}\n"
-                         "fluid: {density: 1025.0, drag_normal: 1.2, drag_tangential: 0.0, added_mass: 1.0}\n"
-                         "seabed: {depth: 20.0, stiffness: 1.0e6, damping_ratio: 0.5}\n"
-                         "initial: {mode: equilibrium}\nsimulation: {integrator: implicit, dt: 0.01}\n"),
-        SimulatorUse::kStaticsOnly);
-    SimulationSnapshot s;
-    sim.snapshot(s);
-    top.push_back(s.chain.base_force.norm() / fairlead - 1.0);
-    bottom.push_back(s.chain.load_force.norm() / exact.horizontal - 1.0);
-    std::cout << "n = " << n << ": fairlead " << s.chain.base_force.norm() << " N (closed form " << fairlead << ", "
-              << top.back() << "), anchor " << s.chain.load_force.norm() << " N (H " << exact.horizontal << ", "
-              << bottom.back() << "), suspended " << length - s.chain.seabed.grounded_length << " m (V / w "
-              << exact.vertical / w << ")\n";
+    const GroundedErrors e = groundedStatics(std::vector<double>(n, 100.0 / n), 90.0);
+    top.push_back(e.fairlead);
+    bottom.push_back(e.anchor);
+    std::cout << n << " equal links: fairlead " << e.fairlead << ", anchor " << e.anchor << ", suspended " << e.suspended
+              << " m (V / w " << e.closed_suspended << ")\n";
   }
-  EXPECT_LT(std::abs(top[2]), 1.3e-3);
-  EXPECT_LT(std::abs(top[3]), 8e-4);
-  EXPECT_LT(std::abs(bottom[2]), 3.3e-3);
-  EXPECT_LT(std::abs(bottom[3]), 1.8e-3);
-  EXPECT_GT(std::abs(top[1] / top[3]), 3.0);
-  EXPECT_GT(std::abs(bottom[1] / bottom[3]), 3.0);
+  EXPECT_LT(std::abs(top[1]), 2.8e-3);
+  EXPECT_LT(std::abs(bottom[1]), 4e-3);
+  EXPECT_LT(std::abs(top[2]), 2.5e-4);
+  EXPECT_LT(std::abs(top[3]), 2.5e-4);
+  EXPECT_LT(std::abs(bottom[2]), 5e-4);
+  EXPECT_LT(std::abs(bottom[3]), 5e-4);
+  std::vector<double> graded(24, 1.0);
+  graded.insert(graded.end(), 16, 0.5);
+  graded.insert(graded.end(), 10, 6.8);
+  double worst_top = 0.0, worst_bottom = 0.0;
+  for (double span : {89.0, 89.5, 90.0, 90.5, 91.0}) {
+    const GroundedErrors e = groundedStatics(graded, span);
+    std::cout << "graded 50 links, span " << span << " m: fairlead " << e.fairlead << ", anchor " << e.anchor
+              << ", suspended " << e.suspended << " m (V / w " << e.closed_suspended << ")\n";
+    worst_top = std::max(worst_top, std::abs(e.fairlead));
+    worst_bottom = std::max(worst_bottom, std::abs(e.anchor));
+  }
+  EXPECT_LT(worst_top, 1e-3);     // the issue's 0.1 %, 3.4x the measured
+  EXPECT_LT(worst_bottom, 1.6e-3);
+}
+
+// The statics of the grounded line above graded 20 x 1.25 m, 20 x 0.5 m, 10 x 6.5 m at a 90.5 m span
+// ends in a kink: link 29 (0.5 m, by the touchdown) carries 978 N of compression, the fairlead's tension
+// 13 % above the closed form's; from there the dynamics telescoped the slack links and the line slid
+// (RK4 at 0.1 ms too). A tension-only cable has no such equilibrium: the start is refused, naming it.
+TEST(AxialElasticity, AnElasticEquilibriumWithACompressedLinkIsRefused) {
+  std::vector<double> graded(20, 1.25);
+  graded.insert(graded.end(), 20, 0.5);
+  graded.insert(graded.end(), 10, 6.5);
+  std::string message;
+  try {
+    groundedStatics(graded, 90.5);
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("link 29 in compression"), std::string::npos) << message;
+  // The same line at 90 m has a tension-only equilibrium, and finds it.
+  EXPECT_LT(std::abs(groundedStatics(graded, 90.0).fairlead), 1e-3);
 }
 
 TEST(AxialElasticity, TheStaticsIsIrvinesElasticCatenaryBetweenTwoPoints) {
@@ -450,13 +508,15 @@ TEST(AxialElasticity, TheStaticsIsIrvinesElasticCatenaryBetweenTwoPoints) {
   }
   std::cout << "order in n (top, bottom): " << order(errors_upper[1], errors_upper[2]) << ", "
             << order(errors_lower[1], errors_lower[2]) << "\n";
-  // Measured (top / bottom): -2.0e-4 / -3.7e-4 at n = 25, -7.5e-6 / -6.3e-5 at n = 50, +2.0e-5 / -1.2e-6 at
-  // n = 100; the elastic effect itself is 1.3 % (the inextensible catenary's tensions between the same
-  // points). No clean order: the top's error changes sign between 50 and 100 (a first-order part, the
-  // link's mass riding at its base end, against the second-order one of rigid links). Bound at n = 50:
-  // 3e-4 (5x the larger measured error; the issue asks 0.1 %).
-  EXPECT_LT(std::abs(errors_upper[1]), 3e-4);
-  EXPECT_LT(std::abs(errors_lower[1]), 3e-4);
+  // Measured (top / bottom): -3.8e-4 / -4.9e-4 at n = 25, -9.5e-5 / -1.2e-4 at n = 50, -2.4e-5 / -3.0e-5 at
+  // n = 100, order 2.00 in n; the elastic effect itself is 1.3 % (the inextensible catenary's tensions between
+  // the same points). (Before each link's stretch carried its own weight's consistent load, session 23,
+  // there was no clean order: a first-order part against the second-order one.) Bound at n = 50: 5e-4
+  // (4.1x the larger measured error; the issue asks 0.1 %), and order 2 within 0.2.
+  EXPECT_LT(std::abs(errors_upper[1]), 5e-4);
+  EXPECT_LT(std::abs(errors_lower[1]), 5e-4);
+  EXPECT_NEAR(order(errors_upper[1], errors_upper[2]), 2.0, 0.2);
+  EXPECT_NEAR(order(errors_lower[1], errors_lower[2]), 2.0, 0.2);
   // The elasticity is resolved: between the same points (n = 100's) the inextensible catenary's top
   // tension differs from the elastic one by far more than the error.
   EXPECT_GT(std::abs(stiff_upper / upper_last - 1.0), 10.0 * std::abs(errors_upper[2]));

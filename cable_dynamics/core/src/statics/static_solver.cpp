@@ -197,8 +197,10 @@ StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& de
   return out;
 }
 
-/// Each link's stretch under the tension at its far end, T_k = -J_{k+1} . u_k (the load's pull at the
-/// last), tension only, for the axial springs T = EA / l s (a locked last link stays rigid).
+/// Each link's stretch under the tension across it, T_k = -J_{k+1} . u_k (the load's pull at the last):
+/// what holds the outboard part, whose load includes the far half of link k's own weight (its consistent
+/// load), so T_k is the link's middle tension. Tension only, for the axial springs T = EA / l s (a locked
+/// last link stays rigid).
 Eigen::VectorXd stretchUnderTension(const ChainModel& model, const ChainDeployment& deployed, const StaticSolution& solved,
                                     int first) {
   const int n = model.links();
@@ -212,6 +214,30 @@ Eigen::VectorXd stretchUnderTension(const ChainModel& model, const ChainDeployme
   return stretch;
 }
 
+/// A stretching link in compression is no equilibrium of a tension-only cable (its links telescope
+/// freely while slack): a solve that ends there started into a kink the rigid-link solve can hold (seen
+/// where a 0.5 m link met the touchdown of a line graded 1.25 / 0.5 / 6.5 m, its top tension 13 % high).
+/// Marks `solved` as not converged, naming the link and its compression, beyond 1e-6 of the largest tension.
+void refuseCompression(const ChainModel& model, const ChainDeployment& deployed, int first, StaticSolution& solved) {
+  const int n = model.links();
+  double largest = 0.0, most = 0.0;
+  int where = -1;
+  for (int k = first; k < n; ++k) {
+    const Eigen::Vector3d outboard = k + 1 < n ? Eigen::Vector3d(solved.joint_force.col(k + 1)) : solved.tip_force;
+    const double tension = -outboard.dot(solved.axes.col(k));
+    largest = std::max(largest, std::abs(tension));
+    if (deployed.get(&LinkConstants::axial_stiffness, k) > 0.0 && tension < most) {
+      most = tension;
+      where = k;
+    }
+  }
+  if (where < 0 || -most <= 1e-6 * largest) return;
+  solved.converged = false;
+  solved.message = "the elastic equilibrium found has link " + std::to_string(where + 1) + " in compression (" +
+                   std::to_string(-most) + " N), which a tension-only cable cannot hold: a kink the solve started "
+                   "into (try other link lengths near the touchdown, or initial.mode: angles and let it settle)";
+}
+
 }  // namespace
 
 StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& deployed, const CurrentField& current,
@@ -220,7 +246,7 @@ StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& depl
   const bool held = problem.tip_coupled && model.holdStiffness() > 0.0;
   if (!model.axial() && !held) return solveAtStretch(model, deployed, current, problem, options);
   // Two fixed points in one loop, each sweep a solve:
-  // - the elastic equilibrium: solve with the levers l + s, stretch each link under its far end's tension,
+  // - the elastic equilibrium: solve with the levers l + s, stretch each link under the tension across it,
   //   repeat. Each sweep changes the tensions by the stretch's share of the line's compliance (about
   //   T L / EA of the geometry: 0.04 for a taut 410 m chain at 1 MN), so it contracts fast for a cable;
   // - an exact anchor: the statics' hold (staticHoldStiffness) leaves the tip f / k short of the anchor;
@@ -261,7 +287,10 @@ StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& depl
       sweep_problem.target_position += last_shift;
     }
     if (change <= 1e-12 * length) {
-      if (model.axial()) out.stretch = sweep_problem.stretch;
+      if (model.axial()) {
+        out.stretch = sweep_problem.stretch;
+        refuseCompression(model, deployed, problem.first_link, out);
+      }
       return out;
     }
   }
