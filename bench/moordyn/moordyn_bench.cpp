@@ -4,8 +4,9 @@
 //   - the step each side takes: MoorDyn's own (its CFL rule, RK2, its default; called once per step, and
 //     once per 0.1 s as its chain test calls it), cable_dynamics' RK4 at its recommended step
 //     (CableSimulator::estimateStableTimeStep) and its implicit integrator at 10 ms, both with the line's
-//     EA and axial damping as MoorDyn's (lines/*.yaml), and RK4 with rigid links (EA and c_a set to 0:
-//     the project before its axial elasticity; the payout has no EA, a winch does not carry it yet);
+//     EA and axial damping as MoorDyn's (lines/*.yaml; the payout's winch pays out unstretched length,
+//     docs/MODEL.md section 12), and RK4 with rigid links (EA and c_a set to 0: the project before its
+//     axial elasticity);
 //   - wall time per simulated second of the stepping alone (construction, statics and MoorDyn's initial
 //     condition solve are outside the clock), median over [reps] repetitions, the three sides run one
 //     after the other in every repetition so that they share the machine's load;
@@ -575,8 +576,8 @@ int main(int argc, char** argv) {
       "Sides: cable_dynamics' RK4 at its recommended step and its implicit integrator at 10 ms with the line's EA\n"
       "  (impl large: at the largest of 100, 50, 25, 20 ms whose tension stays within 1 %% of the RK4 run's range\n"
       "  over the dynamic window, the note gives each candidate's deviation; 10 ms when none does)\n"
-      "  and axial damping as MoorDyn's (lines/*.yaml; the payout none: a winch does not carry EA yet), RK4 rigid\n"
-      "  at its recommended step with EA and c_a set to 0 (the inextensible links); MoorDyn (RK2, its\n"
+      "  and axial damping as MoorDyn's (lines/*.yaml; the payout's winch pays out unstretched length), RK4\n"
+      "  rigid at its recommended step with EA and c_a set to 0 (the inextensible links); MoorDyn (RK2, its\n"
       "  own step) called once per MoorDyn step (RK2 row: its errors are the ones to read) and once per 0.1 s as\n"
       "  its chain test calls it (0.1s row: less call overhead, velocity jumps every 0.1 s).\n"
       "static error: against the inextensible (inext) and the elastic (el) catenary, closed forms, and the published\n"
