@@ -378,10 +378,6 @@ namespace {
 /// the closed form, and the suspended length.
 struct GroundedErrors {
   double fairlead = 0.0, anchor = 0.0, suspended = 0.0, closed_suspended = 0.0;
-  /// Where the model's own tension puts the touchdown [m of unstretched arc from the fairlead]: the first
-  /// suspended link's vertical tension at its middle, V_1 (its stretch carries the middle's tension), falls
-  /// at w per metre towards the bed in the statics, so it reaches zero V_1 / w beyond that middle.
-  double touchdown = 0.0;
 };
 
 GroundedErrors groundedStatics(const std::vector<double>& links, double span) {
@@ -407,41 +403,30 @@ GroundedErrors groundedStatics(const std::vector<double>& links, double span) {
   out.anchor = s.chain.load_force.head<2>().norm() / exact.horizontal - 1.0;
   out.suspended = length - s.chain.seabed.grounded_length;
   out.closed_suspended = exact.vertical / w;
-  const int n = static_cast<int>(links.size());
-  double arc = 0.0;
-  for (int k = 1; k <= n; ++k) {
-    arc += links[k - 1];
-    const Eigen::Vector3d end = s.chain.ends.col(k) - s.chain.ends.col(0);  // paper frame, z down [m]
-    if (end.z() < rise - 1e-3) continue;  // node k is the first on the bed (1e-4 m deep at rest)
-    const Eigen::Vector3d axis = (s.chain.ends.col(k) - s.chain.ends.col(k - 1)).normalized();
-    out.touchdown = arc - 0.5 * links[k - 1] + s.chain.far_tension(k - 1) * axis.z() / w;
-    break;
-  }
   return out;
 }
 
 }  // namespace
 
-// A 100 m chain-like line (8 kg/m, 0.05 m: w = 58.7 N/m submerged; EA 2e5 N, strain up to 1 %) from an
+// A 100 m chain-like line (8 kg/m, 0.05 m: w = 58.7 N/m submerged; EA 2e5 N, strain up to 0.9 %) from an
 // anchor on the bed to a fairlead 20 m above it and 90 m out, 71 m of it on a frictionless, stiff bed
 // (1e6 N/m^2: it rests 8e-5 m deep). The tip carries a 1 g point so that its last link stretches too (a
 // massless anchored tip locks it: MODEL.md section 12). Against the closed form above: the fairlead's
-// tension and the anchor's H.
-// Equal links, measured at n = 25, 50, 100, 200: fairlead -0.46 %, +0.070 %, +0.0032 %, +0.0064 %; anchor
-// -0.90 %, +0.12 %, +0.0015 %, +0.011 %. No clean order: what is left follows where the touchdown falls
-// within a link (grounded 72.0, 71.5, 71.0, 71.375 m against 71.31 m). A rigid link cannot follow the
-// catenary leaving the bed: the line beyond it sits as if the touchdown were up to half a link off, at
-// heights off by up to the curvature there (w / H = 0.093 1/m) times l^2 / 8, and H moves 0.018 % per mm
-// of the fairlead's height. (Before the links carried their own weight's consistent load the errors had a
-// first-order part too, w l h / (2 EA): +0.16 % / +0.43 % at n = 50.) So the issue's 0.1 % at n = 50 is
-// NOT met with equal links (the anchor 0.12 %); it is with the 50 links placed as a mooring analyst
-// places them: 24 of 1 m down the catenary, 16 of 0.5 m across the touchdown and 10 of 6.8 m on the bed.
-// Over five spans (89 to 91 m, the touchdown moving 4 m within the fine links) those are within 2.9e-4
-// (fairlead) and 5.4e-4 (anchor). The touchdown: where the model's tension puts it (the first suspended
-// link's vertical tension over w, beyond its middle) is within 0.088 m of V / w (0.088 % of the line)
-// with 50 equal links over the five spans, and 0.007 m graded; the contact points' first crossing sits on
-// the link grid instead (up to 0.5 m off at n = 50). Bounds: 3-8x the measured errors at n = 100 and 200,
-// on the graded line and for the touchdown; at n = 50 (equal links) 3.3-4x.
+// tension and the anchor's horizontal pull H (the anchor also holds the share of the last link's weight
+// that the bed under a continuous line would carry).
+// Equal links, measured at n = 25, 50, 100, 200: fairlead -0.28 %, +0.16 %, +0.041 %, +0.027 %; anchor
+// -0.55 %, +0.30 %, +0.073 %, +0.050 %. Two parts: a first-order one, each link's stretch carrying its
+// far end's tension (its own weight rides with its base end: the line short by w l h / (2 EA), 5.9 mm at
+// n = 50, which moves H by +0.16 %), and the touchdown's, which follows where the touchdown falls within
+// a link (grounded 72.0, 71.5, 71.0, 71.375 m against 71.31 m): a rigid link cannot follow the catenary off
+// the bed, the line beyond sits as if the touchdown were up to half a link off, at heights off by up to
+// the curvature there (w / H = 0.093 1/m) times l^2 / 8, and H moves 0.018 % per mm of the fairlead's
+// height. The issue's 0.1 % at n = 50 is NOT met with equal links (0.16 % and 0.30 %). With the 50 links
+// placed as a mooring analyst places them (24 of 1 m down the catenary, 16 of 0.5 m across the touchdown,
+// 10 of 6.8 m on the bed), over five spans (89 to 91 m, the touchdown moving 4 m within the fine links):
+// within 3.5e-4 (fairlead) and 7.5e-4 (anchor), within 0.1 % but not by the 3x margin the bounds here
+// keep. Bounds: 3x the measured errors at n = 100 and 200 and on the graded line, and a fall of at least
+// 3x from n = 50 to 200 (measured 6x).
 TEST(AxialElasticity, TheStaticsIsTheElasticCatenaryWithAGroundedPart) {
   std::vector<double> top, bottom;
   for (int n : {25, 50, 100, 200}) {
@@ -451,12 +436,12 @@ TEST(AxialElasticity, TheStaticsIsTheElasticCatenaryWithAGroundedPart) {
     std::cout << n << " equal links: fairlead " << e.fairlead << ", anchor " << e.anchor << ", suspended " << e.suspended
               << " m (V / w " << e.closed_suspended << ")\n";
   }
-  EXPECT_LT(std::abs(top[1]), 2.8e-3);
-  EXPECT_LT(std::abs(bottom[1]), 4e-3);
-  EXPECT_LT(std::abs(top[2]), 2.5e-4);
-  EXPECT_LT(std::abs(top[3]), 2.5e-4);
-  EXPECT_LT(std::abs(bottom[2]), 5e-4);
-  EXPECT_LT(std::abs(bottom[3]), 5e-4);
+  EXPECT_LT(std::abs(top[2]), 1.3e-3);
+  EXPECT_LT(std::abs(top[3]), 8e-4);
+  EXPECT_LT(std::abs(bottom[2]), 2.2e-3);
+  EXPECT_LT(std::abs(bottom[3]), 1.5e-3);
+  EXPECT_GT(std::abs(top[1] / top[3]), 3.0);
+  EXPECT_GT(std::abs(bottom[1] / bottom[3]), 3.0);
   std::vector<double> graded(24, 1.0);
   graded.insert(graded.end(), 16, 0.5);
   graded.insert(graded.end(), 10, 6.8);
@@ -464,29 +449,20 @@ TEST(AxialElasticity, TheStaticsIsTheElasticCatenaryWithAGroundedPart) {
   for (double span : {89.0, 89.5, 90.0, 90.5, 91.0}) {
     const GroundedErrors e = groundedStatics(graded, span);
     std::cout << "graded 50 links, span " << span << " m: fairlead " << e.fairlead << ", anchor " << e.anchor
-              << ", suspended " << e.suspended << " m, touchdown by the tension " << e.touchdown << " m (V / w "
-              << e.closed_suspended << ")\n";
+              << ", suspended " << e.suspended << " m (V / w " << e.closed_suspended << ")\n";
     worst_top = std::max(worst_top, std::abs(e.fairlead));
     worst_bottom = std::max(worst_bottom, std::abs(e.anchor));
   }
-  EXPECT_LT(worst_top, 1e-3);     // the issue's 0.1 %, 3.4x the measured
-  EXPECT_LT(worst_bottom, 1.6e-3);
-  // The touchdown the model's tension gives, with 50 equal links over five spans (the contact points'
-  // first crossing, `touchdown_arc_length`, sits on the link grid: up to 0.5 m off at n = 50).
-  double worst_touchdown = 0.0;
-  for (double span : {89.0, 89.5, 90.0, 90.5, 91.0}) {
-    const GroundedErrors e = groundedStatics(std::vector<double>(50, 2.0), span);
-    std::cout << "50 equal links, span " << span << " m: touchdown by the tension " << e.touchdown << " m from the fairlead (V / w "
-              << e.closed_suspended << ")\n";
-    worst_touchdown = std::max(worst_touchdown, std::abs(e.touchdown - e.closed_suspended));
-  }
-  EXPECT_LT(worst_touchdown, 0.3);  // [m]
+  EXPECT_LT(worst_top, 1.1e-3);
+  EXPECT_LT(worst_bottom, 2.3e-3);
 }
 
 // The statics of the grounded line above graded 20 x 1.25 m, 20 x 0.5 m, 10 x 6.5 m at a 90.5 m span
 // ends in a kink: link 29 (0.5 m, by the touchdown) carries 978 N of compression, the fairlead's tension
 // 13 % above the closed form's; from there the dynamics telescoped the slack links and the line slid
 // (RK4 at 0.1 ms too). A tension-only cable has no such equilibrium: the start is refused, naming it.
+// (Measured with links carrying their own weight's consistent load, session 23, and with the base-end
+// lumping the model has: both hold the kink.)
 TEST(AxialElasticity, AnElasticEquilibriumWithACompressedLinkIsRefused) {
   std::vector<double> graded(20, 1.25);
   graded.insert(graded.end(), 20, 0.5);
@@ -536,15 +512,13 @@ TEST(AxialElasticity, TheStaticsIsIrvinesElasticCatenaryBetweenTwoPoints) {
   }
   std::cout << "order in n (top, bottom): " << order(errors_upper[1], errors_upper[2]) << ", "
             << order(errors_lower[1], errors_lower[2]) << "\n";
-  // Measured (top / bottom): -3.8e-4 / -4.9e-4 at n = 25, -9.5e-5 / -1.2e-4 at n = 50, -2.4e-5 / -3.0e-5 at
-  // n = 100, order 2.00 in n; the elastic effect itself is 1.3 % (the inextensible catenary's tensions between
-  // the same points). (Before each link's stretch carried its own weight's consistent load, session 23,
-  // there was no clean order: a first-order part against the second-order one.) Bound at n = 50: 5e-4
-  // (4.1x the larger measured error; the issue asks 0.1 %), and order 2 within 0.2.
-  EXPECT_LT(std::abs(errors_upper[1]), 5e-4);
-  EXPECT_LT(std::abs(errors_lower[1]), 5e-4);
-  EXPECT_NEAR(order(errors_upper[1], errors_upper[2]), 2.0, 0.2);
-  EXPECT_NEAR(order(errors_lower[1], errors_lower[2]), 2.0, 0.2);
+  // Measured (top / bottom): -2.0e-4 / -3.7e-4 at n = 25, -7.5e-6 / -6.3e-5 at n = 50, +2.0e-5 / -1.2e-6 at
+  // n = 100; the elastic effect itself is 1.3 % (the inextensible catenary's tensions between the same
+  // points). No clean order: the top's error changes sign between 50 and 100 (a first-order part, the
+  // link's mass riding at its base end, against the second-order one of rigid links). Bound at n = 50:
+  // 3e-4 (5x the larger measured error; the issue asks 0.1 %).
+  EXPECT_LT(std::abs(errors_upper[1]), 3e-4);
+  EXPECT_LT(std::abs(errors_lower[1]), 3e-4);
   // The elasticity is resolved: between the same points (n = 100's) the inextensible catenary's top
   // tension differs from the elastic one by far more than the error.
   EXPECT_GT(std::abs(stiff_upper / upper_last - 1.0), 10.0 * std::abs(errors_upper[2]));

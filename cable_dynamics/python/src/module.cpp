@@ -82,7 +82,7 @@ PYBIND11_MODULE(_bindings, m) {  // cable_dynamics._bindings, re-exported by the
       .def_readonly("contact_energy", &Snapshot::contact_energy, "the bottom's contact springs [J]")
       .def_readonly("strain", &Snapshot::strain, "(n) each link's strain, axial elasticity only (else empty) [-]")
       .def_readonly("stretched_length", &Snapshot::stretched_length, "(n) each link's stretched length [m] (else empty)")
-      .def_readonly("far_tension", &Snapshot::far_tension, "(n) the tension each link's stretch carries: its middle's (the far end's plus half its own weight along it) [N] (else empty)")
+      .def_readonly("far_tension", &Snapshot::far_tension, "(n) the tension at each link's far end [N] (else empty)")
       .def_readonly("slack_links", &Snapshot::slack_links, "links whose stretch carries no tension")
       .def_readonly("bend_radius", &Snapshot::bend_radius,
                     "(n) joint k's bend radius, links k-1 and k (joint 0: against the base's clamp) [m]; inf straight")

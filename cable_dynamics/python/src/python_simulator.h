@@ -43,7 +43,7 @@ struct Snapshot {
   double max_penetration = 0.0;        ///< [m]
   double contact_energy = 0.0;         ///< the contact springs' potential energy [J]
   /// Axial elasticity (cable.axial_stiffness; empty with rigid links): each link's strain [-], its
-  /// stretched length [m], the tension its stretch carries (its middle's) [N], and how many links are slack.
+  /// stretched length [m], the tension at its far end [N], and how many links are slack.
   Eigen::VectorXd strain, stretched_length, far_tension;
   int slack_links = 0;
   /// The limits (cable.limits; dynamics/cable_limits.h): each joint's bend radius [m] (+inf straight),

@@ -276,8 +276,6 @@ EIGEN_ALWAYS_INLINE void jointForcesPass(const ChainModel& model, ChainData& dat
   }
   const Eigen::Vector3d tip_acc = data.tip_known_acc + toEigen(tip_delta);
   data.load_force = model.load().inertia * tip_acc - data.load_external;
-  // The last link's far half weight (a stretching link's consistent load) is the cable's, on the tip.
-  data.load_force.z() += data.deployed.tipWeight();
   if (model.body().active) data.load_force += finishRovBody(model.body(), tip_acc, data.body);
   // The load's added-mass force -m_a a_tip: its power goes with the links' (the kinetic energy is the
   // structure's alone).

@@ -120,23 +120,8 @@ void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
   c.mass_per_length[i] = deployed ? per_length : 0.0;
   c.added[i] = added;
   c.across[i] = c.mass_per_length[i] + added;
-  // EA / l and c_a / l of the link's stretch (a locked last link stays rigid).
-  const bool stretches = deployed && axial_ && !(last_locked_ && k == n_ - 1);
-  if (stretches) {
-    // The consistent load of the stretch (docs/MODEL.md section 12): the link's own weight goes half to
-    // its base end and half to its far end beyond the stretch (the next link's base end, or the tip), so
-    // that the stretch carries the tension at the link's middle. The attachments stay at their points.
-    c.far_weight[i] = 0.5 * g * p.submerged_mass(k);
-    c.weight_moment[i] = g * points.sub1;
-  } else {
-    c.far_weight[i] = 0.0;
-    c.weight[i] = g * (p.submerged_mass(k) + points.sub0);
-    c.weight_moment[i] = g * (0.5 * l * p.submerged_mass(k) + points.sub1);
-  }
-  if (axial_) {
-    gatherWeight(d, k);
-    if (k + 1 < n_) gatherWeight(d, k + 1);
-  }
+  c.weight[i] = g * (p.submerged_mass(k) + points.sub0);
+  c.weight_moment[i] = g * (0.5 * l * p.submerged_mass(k) + points.sub1);
   c.translational[i] = l * c.across[i] + points.mass0 + points.added0;
   c.half_moment[i] = 0.5 * l * l * c.across[i] + points.mass1 + points.added1;
   c.third_moment[i] = l * l * l / 3.0 * c.across[i] + points.mass2 + points.added2;
@@ -155,19 +140,10 @@ void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
       deployed ? LinkDrag::coefficients(rho, 2.0 * radius, p.drag_normal(k), p.drag_tangential(k)) : DragCoefficients{};
   c.drag_normal[i] = drag.normal;
   c.drag_tangential[i] = drag.tangential;
+  // EA / l and c_a / l of the link's stretch (a winch is refused with axial elasticity: l is configured).
+  const bool stretches = deployed && axial_ && !(last_locked_ && k == n_ - 1);
   c.axial_stiffness[i] = stretches ? p.axial_stiffness(k) / l : 0.0;
   c.axial_damping[i] = stretches ? p.axial_damping / l : 0.0;
-}
-
-void ChainModel::gatherWeight(ChainDeployment& d, int k) const {
-  // Link k's own weight less its far half, its attachments', and the far half of the link inboard, whose
-  // far end is this link's base end (a drum slot or a rigid link has none).
-  const LinkProperties& p = d.properties_;
-  LinkConstants& c = d.lanes_[k / kBlockLanes];
-  const int i = k % kBlockLanes;
-  const double points = p.length(k) > 0.0 ? points_[k].sub0 : 0.0;
-  const double inboard = k > 0 ? d.get(&LinkConstants::far_weight, k - 1) : 0.0;
-  c.weight[i] = p.gravity * (p.submerged_mass(k) + points) - c.far_weight[i] + inboard;
 }
 
 void ChainModel::deploy(ChainDeployment& d, int first) const {

@@ -25,7 +25,7 @@ CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const Cha
     }
   }
   kinetic = 0.5 * model.load().mass * data.tip_velocity.squaredNorm();
-  potential = -(model.load().weight + data.deployed.tipWeight()) * data.tip_position.z();
+  potential = -model.load().weight * data.tip_position.z();
   if (model.body().active) {  // its terms are the present state's (ChainDynamics evaluates them with the kinematics)
     double body_kinetic = 0.0, body_potential = 0.0;
     rovBodyEnergy(model.body(), data.body, data.tip_position, body_kinetic, body_potential);

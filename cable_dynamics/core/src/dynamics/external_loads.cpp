@@ -62,7 +62,7 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
   }
   // The load: weight, drag, and the PD coupling to its anchor or to the ROV.
   const LoadConstants& load = model.load();
-  data.load_external = (load.weight + data.deployed.tipWeight()) * Eigen::Vector3d::UnitZ();  // + the last link's far half
+  data.load_external = load.weight * Eigen::Vector3d::UnitZ();
   if (in_water && load.drag_area > 0.0) {
     const Eigen::Vector3d drag =
         pointDrag(model.fluidDensity(), load.drag_area, data.tip_velocity, current_field.at(data.tip_position.z()));

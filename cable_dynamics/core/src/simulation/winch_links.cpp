@@ -33,14 +33,13 @@ struct StretchSlots {
 
 /// Splits the winch's link `first` of unstretched length `winch_length` [m] into the new winch's link
 /// (first - 1, the inboard part) and slot `first` of `configured` length [m], keeping its strain
-/// eps = s / l and its strain rate: the configured part takes s' = eps' l_c; the winch's part
-/// s' = eps' l_a + eps v, for it grows at the pay-out speed v [m/s].
-/// A link's stretch carries the tension at its middle (half its own weight rides on its far end: docs/MODEL.md
-/// section 12), so where the old link's uniform strain eps carried its middle's tension, the configured
-/// (outer) part carries l_a / 2 less of the weight along the axis, w' u.g, and the winch's part l_c / 2 more:
-/// s_c = eps l_c - w' u.g l_a l_c / (2 EA), s_a = eps l_a + w' u.g l_c l_a / (2 EA), each never below slack
-/// while the line is taut. The two corrections cancel: the far end stays where it was, and the tension goes
-/// on through the split (without them, the line pull of a 1 m-link line, EA 1e6 N, dipped 0.25 % at each one).
+/// eps = s / l and its strain rate: the configured part takes s = eps l_c, s' = eps' l_c; the winch's part
+/// the rest, s' = eps' l_a + eps v, for it grows at the pay-out speed v [m/s].
+/// A link's stretch carries the tension at its far end (its own weight rides with its base end: docs/MODEL.md
+/// section 12), so the winch's part, whose far end now carries the configured part's weight along the axis
+/// too, w l_c u.g, stretches by that over its EA / l_a more while the line is taut: the tension goes on
+/// through the split (without it, the line pull of a 1 m-link line, EA 1e6 N, dipped 0.25 % at each one),
+/// and the far end moves out by w l_c l_a u.g / EA (7e-6 m there), what the finer lumping puts there.
 void splitStretch(const ChainModel& model, const LinkProperties& properties, Eigen::VectorXd& x, int first,
                   double winch_length, double configured, double winch_speed) {
   const StretchSlots stretch(model);
@@ -49,15 +48,12 @@ void splitStretch(const ChainModel& model, const LinkProperties& properties, Eig
   const double strain_rate = (rate - strain * winch_speed) / winch_length;  // d/dt (s / l), l' = v
   const double inboard = winch_length - configured;
   const double down = x.segment<3>(StateLayout::axis(first)).normalized().z();  // u.g / |g|: z is down
-  // w' u.g l_a l_c / (2 EA) [m]: properties.submerged_mass(first) is the configured part's, w' l_c / g.
-  const double shift = 0.5 * properties.gravity * properties.submerged_mass(first) * down * inboard /
-                       properties.axial_stiffness(first);
-  // (Where the line rises from the drum or floats the shifts change sign: never below slack.)
-  const bool taut = s > 0.0;
-  const double inboard_stretch = taut ? std::max(0.0, strain * inboard + shift) : strain * inboard;
-  const double configured_stretch = taut ? std::max(0.0, strain * configured - shift) : strain * configured;
+  const double weight_along = properties.gravity * properties.submerged_mass(first) * down;  // [N], l_c's
+  // (Less where the line rises from the drum or floats: never below slack.)
+  const double inboard_stretch = s > 0.0 ? std::max(0.0, strain * inboard + weight_along * inboard / properties.axial_stiffness(first))
+                                         : strain * inboard;
   stretch.set(x, first - 1, inboard_stretch, strain_rate * inboard + strain * winch_speed);
-  stretch.set(x, first, configured_stretch, strain_rate * configured);
+  stretch.set(x, first, strain * configured, strain_rate * configured);
 }
 
 }  // namespace

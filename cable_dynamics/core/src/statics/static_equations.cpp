@@ -113,7 +113,7 @@ bool StaticEquations::touchesSeabed(const StaticState& s) const {
 
 Eigen::Vector3d StaticEquations::loadForceFree(const Eigen::Vector3d& tip) const {
   const LoadConstants& load = model_.load();
-  Eigen::Vector3d f(0.0, 0.0, load.weight + deployed_.tipWeight());  // + the last link's far half (stretching)
+  Eigen::Vector3d f(0.0, 0.0, load.weight);
   const SeabedContactConstants& c = model_.seabedContact();
   ContactPlace place;
   if (c.load_contact && contact_scale_ > 0.0 && contactPlace(c.bed, toVec3(tip), {0.0, 0.0, 0.0}, place)) {

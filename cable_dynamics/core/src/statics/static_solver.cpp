@@ -197,10 +197,8 @@ StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& de
   return out;
 }
 
-/// Each link's stretch under the tension across it, T_k = -J_{k+1} . u_k (the load's pull at the last):
-/// what holds the outboard part, whose load includes the far half of link k's own weight (its consistent
-/// load), so T_k is the link's middle tension. Tension only, for the axial springs T = EA / l s (a locked
-/// last link stays rigid).
+/// Each link's stretch under the tension at its far end, T_k = -J_{k+1} . u_k (the load's pull at the
+/// last), tension only, for the axial springs T = EA / l s (a locked last link stays rigid).
 Eigen::VectorXd stretchUnderTension(const ChainModel& model, const ChainDeployment& deployed, const StaticSolution& solved,
                                     int first) {
   const int n = model.links();
@@ -246,7 +244,7 @@ StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& depl
   const bool held = problem.tip_coupled && model.holdStiffness() > 0.0;
   if (!model.axial() && !held) return solveAtStretch(model, deployed, current, problem, options);
   // Two fixed points in one loop, each sweep a solve:
-  // - the elastic equilibrium: solve with the levers l + s, stretch each link under the tension across it,
+  // - the elastic equilibrium: solve with the levers l + s, stretch each link under its far end's tension,
   //   repeat. Each sweep changes the tensions by the stretch's share of the line's compliance (about
   //   T L / EA of the geometry: 0.04 for a taut 410 m chain at 1 MN), so it contracts fast for a cable;
   // - an exact anchor: the statics' hold (staticHoldStiffness) leaves the tip f / k short of the anchor;

@@ -81,11 +81,6 @@ class ChainDeployment {
   const LinkConstants& of(int k) const { return lanes_[k / kBlockLanes]; }
   /// Scalar constant `field` of link k, e.g. get(&LinkConstants::length, k).
   double get(double (LinkConstants::*field)[kBlockLanes], int k) const { return (of(k).*field)[k % kBlockLanes]; }
-  /// The far half of the last link's own weight when it stretches, carried at the tip (0 otherwise) [N].
-  double tipWeight() const {
-    const int n = static_cast<int>(properties_.length.size());
-    return n > 0 ? get(&LinkConstants::far_weight, n - 1) : 0.0;
-  }
   /// Link k's Morison coefficients 1/2 rho C_n d and 1/2 rho C_t pi d (its section's; 0 on the drum) [kg/m^2].
   DragCoefficients dragCoefficients(int k) const {
     return {get(&LinkConstants::drag_normal, k), get(&LinkConstants::drag_tangential, k)};

@@ -37,8 +37,7 @@ struct ChainOutputs {
   Eigen::VectorXd tension;       ///< (n) force along link k at its base end, + pulls towards the base [N]
                                  ///< (0 on a winch's drum; at the base link: the line pull)
   /// Axial elasticity (empty with rigid links): each link's stretch s_k [m] (its strain is s_k / l_k,
-  /// its stretched length l_k + s_k) and the tension its stretch carries [N] (0: slack): the far end's plus
-  /// half the link's own weight along it, its middle's (the far half rides beyond the stretch).
+  /// its stretched length l_k + s_k) and the tension its stretch carries at its far end [N] (0: slack).
   Eigen::VectorXd stretch, far_tension;
   Eigen::VectorXd strain;  ///< (n) s_k / l_k [-] (empty with rigid links)
   int slack_links = 0;     ///< slack links: shorter than unstretched (s_k < 0; a locked last link not counted)

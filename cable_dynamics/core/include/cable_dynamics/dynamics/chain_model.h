@@ -126,9 +126,6 @@ class ChainModel {
   ChainModel(const CableParams& params, int slots_built);
   /// Slot k's lane constants and mass properties in `d` for length `length` [m] (0: on the drum).
   void setLinkLength(ChainDeployment& d, int k, double length) const;
-  /// With axial elasticity: link k's weight at its base end from its own and its inboard neighbour's far
-  /// half (LinkConstants::far_weight), after either changed.
-  void gatherWeight(ChainDeployment& d, int k) const;
 
   int n_;
   int initial_first_ = 0;  ///< winch.stored_links

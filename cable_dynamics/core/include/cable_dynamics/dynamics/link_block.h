@@ -86,11 +86,8 @@ struct alignas(64) LinkConstants {
   double mass_per_length[kBlockLanes];  ///< m' [kg/m]
   double added[kBlockLanes];            ///< m_a', normal added mass per length [kg/m]
   double across[kBlockLanes];           ///< m' + m_a' [kg/m]
-  double weight[kBlockLanes];           ///< submerged weight at the base end and along the link, attachments
-                                        ///< included; with a stretch, the inboard link's far half too [N]
+  double weight[kBlockLanes];           ///< submerged weight, attachments included [N]
   double weight_moment[kBlockLanes];    ///< its first moment about the base end, along the axis [N m]
-  double far_weight[kBlockLanes];       ///< with a stretch: half the link's own submerged weight, carried at
-                                        ///< its far end beyond the stretch (docs/MODEL.md section 12) [N]
   double translational[kBlockLanes];    ///< l (m' + m_a') + sum (m_p + m_pa), isotropic inertia [kg]
   double half_moment[kBlockLanes];      ///< l^2/2 (m' + m_a') + sum (m_p + m_pa) s_p [kg m]
   double third_moment[kBlockLanes];     ///< l^3/3 (m' + m_a') + sum (m_p + m_pa) s_p^2 [kg m^2]

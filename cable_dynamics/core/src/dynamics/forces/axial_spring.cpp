@@ -44,16 +44,8 @@ double winchStrainPower(const ChainData& data, double winch_speed) {
   const LinkConstants& c = data.deployed.of(first);
   const int i = LinkBlocks::lane(first);
   const double l = c.length[i];
-  if (!(l > 0.0)) return 0.0;
-  const LinkBlock& block = data.links.of(first);
-  const double s = block.stretch[i];
   // d/dl (EA s^2 / (2 l)) = -(EA / l) s^2 / (2 l), while stretched (a slack link stores nothing).
-  const double strain = -winch_speed * AxialSpring::energy(c.axial_stiffness[i], s) / l;
-  // The far half of the link's own weight, w l / 2, rides beyond its stretch (its consistent load): its
-  // potential differs from the rigid link's by -(w l / 2) s u_z (z down), whose rate at fixed s is
-  // -v (w / 2) s u_z. Slack or taut.
-  const double far_half = -winch_speed * (c.far_weight[i] / l) * s * block.u.z[i];
-  return strain + far_half;
+  return l > 0.0 ? -winch_speed * AxialSpring::energy(c.axial_stiffness[i], data.links.of(first).stretch[i]) / l : 0.0;
 }
 
 double axialLossAtShiftedRates(const ChainModel& model, const ChainData& data, const Eigen::VectorXd& shift) {

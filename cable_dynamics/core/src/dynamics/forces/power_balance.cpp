@@ -19,9 +19,7 @@ double paidOutEnergyPerLength(const ChainData& data, const Vec3& exit_velocity) 
   const double spin = dot(omega, block.u[i]);
   const double kinetic = 0.5 * per_length * dot(exit_velocity, exit_velocity) +
                          0.5 * (c.thick_transverse[i] * (dot(omega, omega) - spin * spin) + c.polar[i] * spin * spin) / l;
-  // Its weight per length: the base link's weight at its base end plus its far half (the slot inboard is
-  // on the drum, no far half comes from it).
-  const double potential = -((c.weight[i] + c.far_weight[i]) / l) * block.base_pos.z[i];
+  const double potential = -(c.weight[i] / l) * block.base_pos.z[i];
   return kinetic + potential;
 }
 

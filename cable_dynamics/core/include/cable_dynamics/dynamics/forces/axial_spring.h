@@ -3,8 +3,7 @@
 /// \brief The links' axial elasticity (docs/MODEL.md section 12): the law of one link's stretch, its
 ///        value, its stored energy and its loss, side by side; and the passes over the chain that the
 ///        dynamics call. A link's far end sits l + s along its axis from its base end: the stretch s [m]
-///        is a massless prismatic joint at the link's far end, the tension across it is the law below
-///        (with half the link's own weight beyond it, LinkConstants::far_weight, that is its middle's).
+///        is a massless prismatic joint at the link's far end, the tension there is the law below.
 
 #include "cable_dynamics/dynamics/chain_data.h"
 #include "cable_dynamics/dynamics/chain_model.h"
@@ -50,8 +49,6 @@ double axialEnergy(const ChainModel& model, const ChainData& data);
 /// the winch's link's stiffness EA / l falls as its unstretched length l grows, so the same stretch s
 /// holds less energy, 1/2 EA s^2 / l; its rate at fixed s, -v (1/2 EA s^2 / l) / l, is an input to the
 /// energy balance as the paid-out material's own energy is (docs/MODEL.md section 12, "With a winch").
-/// With it, the rate of the potential of the link's far half weight, which rides on its stretch s: at
-/// fixed s, -v (w / 2) s u_z (w its submerged weight per length, z down).
 double winchStrainPower(const ChainData& data, double winch_speed);
 
 /// The power the stretches' dampers take out [W] with each link's stretch rate (and the rate its damper
