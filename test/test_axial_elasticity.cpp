@@ -524,6 +524,48 @@ TEST(AxialElasticity, TheStaticsIsIrvinesElasticCatenaryBetweenTwoPoints) {
   EXPECT_GT(std::abs(stiff_upper / upper_last - 1.0), 10.0 * std::abs(errors_upper[2]));
 }
 
+// A slack link's chord may shorten to half its length, no further (forces/axial_spring.h, kSlackStop):
+// beyond, its stretch meets a stop as stiff as its spring. One 1 m link in zero gravity and air, a 1 kg
+// free load at its tip moving in at 1 m/s from s = -0.4 m: it coasts to the stop at -0.5 m (0.1 s), rides
+// the stop's spring k = EA / l = 1e4 N/m for half a period, pi sqrt(m / k) = 31.4 ms, down to
+// -0.5 - v sqrt(m / k) = -0.51 m, and leaves it at 1 m/s; the stop pushes with at most k 0.01 = 100 N.
+// RK4 at 0.1 ms (h omega = 0.01). Measured: the deepest stretch, the rebound speed and the peak push within
+// 2e-6 relative, the time in the stop within 1e-4 s (the step); bounds 1e-5 and 3e-4 s. Before the stop
+// (session 23) a slack link telescoped without limit: config/rov_dive.yaml with EA had its last link at
+// -23 times its length.
+TEST(AxialElasticity, ASlackLinkShortensToHalfItsLengthAndNoFurther) {
+  CableSimulator sim(loadConfigString(
+      "cable: {links: 1, length: 1.0, diameter: 0.01, mass_per_length: 1.0, axial_stiffness: 1.0e4, "
+      "stiffness: {model: bending}}\nload: {mass: 1.0, mode: free}\nfluid: {density: 0.0}\ngravity: 0.0\n"
+      "initial: {elevation: 0.0, azimuth: 0.0, torsion: 0.0}\nsimulation: {integrator: rk4, dt: 0.0001}\n"));
+  Eigen::VectorXd x = sim.state();
+  x(StateLayout::stretch(1, false, 0)) = -0.4;
+  x(StateLayout::stretchRate(1, false, 0)) = -1.0;
+  sim.setState(x);
+  SimulationSnapshot snap;
+  double deepest = 0.0, push = 0.0, entered = -1.0, left = -1.0, rebound = 0.0;
+  for (int i = 0; i < 3000; ++i) {
+    ASSERT_TRUE(sim.step().ok);
+    sim.snapshot(snap);
+    const double s = snap.chain.stretch(0);
+    deepest = std::min(deepest, s);
+    push = std::min(push, snap.chain.far_tension(0));
+    if (entered < 0.0 && s < -0.5) entered = sim.time();
+    if (entered >= 0.0 && left < 0.0 && s > -0.5) {
+      left = sim.time();
+      rebound = sim.state()(StateLayout::stretchRate(1, false, 0));
+    }
+  }
+  const double omega = std::sqrt(1.0e4 / 1.0);
+  std::cout << std::setprecision(10) << "deepest " << deepest << " m, push " << push << " N, in the stop " << entered << " to " << left
+            << " s, rebound " << rebound << " m/s\n";
+  EXPECT_NEAR(deepest / (-0.5 - 1.0 / omega) - 1.0, 0.0, 1e-5);
+  EXPECT_NEAR(push / (-1.0e4 * (1.0 / omega)) - 1.0, 0.0, 1e-5);
+  EXPECT_NEAR(rebound - 1.0, 0.0, 1e-5);
+  EXPECT_NEAR(left - entered, M_PI / omega, 3e-4);
+  EXPECT_NEAR(entered, 0.1, 3e-4);
+}
+
 TEST(AxialElasticity, BadInputsAreRefusedWithTheKey) {
   const std::string cable = "cable: {links: 4, length: 10.0, diameter: 0.02, mass_per_length: 1.0, ";
   const std::string rest = "stiffness: {model: bending}}\nload: {mass: 1.0}\nsimulation: {integrator: rk4, dt: 0.0001}\n";

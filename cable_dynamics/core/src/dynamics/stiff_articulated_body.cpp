@@ -199,9 +199,13 @@ void StiffArticulatedBody::linearizeStretches(const ChainModel& model, const Cha
     const LinkBlock& block = data.links.of(k);
     const LinkConstants& constants = data.deployed.of(k);
     const double s = block.stretch[lane], rate = block.stretch_rate[lane];
-    const bool taut = s + std::max(0.0, horizon * rate) > -kClearlySlack * constants.length[lane];
-    t.stretch_spring = taut ? constants.axial_stiffness[lane] : 0.0;
-    t.stretch_damper = taut ? constants.axial_damping[lane] : 0.0;
+    const double l = constants.length[lane];
+    const bool taut = s + std::max(0.0, horizon * rate) > -kClearlySlack * l;
+    // The same for the slack stop: in the matrix where the link is past it or comes within 0.1 % of its
+    // length of it over the horizon.
+    const bool stopped = AxialSpring::pastStop(s + std::min(0.0, horizon * rate), l) < kClearlySlack * l;
+    t.stretch_spring = taut || stopped ? constants.axial_stiffness[lane] : 0.0;
+    t.stretch_damper = taut || stopped ? constants.axial_damping[lane] : 0.0;
   }
 }
 

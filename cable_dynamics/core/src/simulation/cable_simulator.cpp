@@ -287,7 +287,7 @@ void CableSimulator::watchStretches(bool count_snaps) {
     const double s = x_(StateLayout::stretch(n, body, k)), rate = x_(StateLayout::stretchRate(n, body, k));
     const LinkConstants& c = dynamics_.deployed().of(k);
     const double damped = k == first ? AxialSpring::dampedRate(s, rate, c.length[i], winch_speed) : rate;
-    largest_tension_ = std::max(largest_tension_, AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, damped));
+    largest_tension_ = std::max(largest_tension_, AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, damped, c.length[i]));
     // A snap: a link shorter than unstretched by more than 0.1 % of its length that comes taut. The
     // margin keeps a taut line's light links, ringing about s = 0 after a snap, from counting each crossing.
     if (s < -kClearlySlack * c.length[i]) {

@@ -20,12 +20,12 @@ void computeAxialTensions(const ChainModel& model, ChainData& data, const Eigen:
     const bool locked = k < first || model.stretchLocked(k);
     const double s = locked ? 0.0 : stretch[k], v = locked ? 0.0 : rate[k];
     const double damped = k == first ? AxialSpring::dampedRate(s, v, c.length[i], winch_speed) : v;
-    const double t = AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, damped);
+    const double t = AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, damped, c.length[i]);
     block.stretch[i] = s;
     block.stretch_rate[i] = v;
     block.damped_rate[i] = damped;
     block.axial_tension[i] = t;
-    block.axial_loss[i] = AxialSpring::loss(c.axial_stiffness[i], s, v, t);
+    block.axial_loss[i] = AxialSpring::loss(c.axial_stiffness[i], s, v, t, c.length[i]);
   }
 }
 
@@ -33,8 +33,9 @@ double axialEnergy(const ChainModel& model, const ChainData& data) {
   if (!model.axial()) return 0.0;
   double sum = 0.0;
   for (int k = data.deployed.firstLink(); k < model.links(); ++k) {
-    sum += AxialSpring::energy(data.deployed.of(k).axial_stiffness[LinkBlocks::lane(k)],
-                               data.links.of(k).stretch[LinkBlocks::lane(k)]);
+    const LinkConstants& c = data.deployed.of(k);
+    const int i = LinkBlocks::lane(k);
+    sum += AxialSpring::energy(c.axial_stiffness[i], data.links.of(k).stretch[i], c.length[i]);
   }
   return sum;
 }
@@ -44,8 +45,13 @@ double winchStrainPower(const ChainData& data, double winch_speed) {
   const LinkConstants& c = data.deployed.of(first);
   const int i = LinkBlocks::lane(first);
   const double l = c.length[i];
-  // d/dl (EA s^2 / (2 l)) = -(EA / l) s^2 / (2 l), while stretched (a slack link stores nothing).
-  return l > 0.0 ? -winch_speed * AxialSpring::energy(c.axial_stiffness[i], data.links.of(first).stretch[i]) / l : 0.0;
+  if (!(l > 0.0)) return 0.0;
+  // d/dl (EA s^2 / (2 l)) = -(EA / l) s^2 / (2 l), while stretched (a slack link stores nothing); past the
+  // stop, d/dl (EA (s + l / 2)^2 / (2 l)) = -E / l + (EA / l) (s + l / 2) / 2.
+  const double k = c.axial_stiffness[i], s = data.links.of(first).stretch[i];
+  const double past = AxialSpring::pastStop(s, l);
+  const double stop = s <= 0.0 && past < 0.0 ? k * past * kSlackStop : 0.0;
+  return winch_speed * (-AxialSpring::energy(k, s, l) / l + stop);
 }
 
 double axialLossAtShiftedRates(const ChainModel& model, const ChainData& data, const Eigen::VectorXd& shift) {
@@ -56,8 +62,8 @@ double axialLossAtShiftedRates(const ChainModel& model, const ChainData& data, c
     const LinkConstants& c = data.deployed.of(k);
     const int i = LinkBlocks::lane(k);
     const double s = block.stretch[i];
-    const double t = AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, block.damped_rate[i] + shift(k));
-    sum += AxialSpring::loss(c.axial_stiffness[i], s, block.stretch_rate[i] + shift(k), t);
+    const double t = AxialSpring::tension(c.axial_stiffness[i], c.axial_damping[i], s, block.damped_rate[i] + shift(k), c.length[i]);
+    sum += AxialSpring::loss(c.axial_stiffness[i], s, block.stretch_rate[i] + shift(k), t, c.length[i]);
   }
   return sum;
 }

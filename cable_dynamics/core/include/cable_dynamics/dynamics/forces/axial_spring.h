@@ -14,13 +14,31 @@ namespace cable_dynamics {
 /// counter (CableSimulator::watchStretches) and the implicit step's matrix (linearizeStretches).
 constexpr double kClearlySlack = 1e-3;
 
-/// T = k s + c s' while the link is stretched (s > 0), clipped at zero (the damper does not push), and 0
-/// when it is slack (s <= 0): a cable carries no compression. k = EA / l [N/m], c = c_a / l [N s/m].
+/// A slack link's chord may shorten to half its length (the cable between its joints snaking), no
+/// further: beyond, its stretch meets a stop as stiff as its spring. Without it a slack link telescoped
+/// without limit: config/rov_dive.yaml with EA 1e8 N had its last link at -23 times its length after
+/// 300 s (the tether's end 23 links from the ROV it is tied to), and the run ended with exit 0.
+constexpr double kSlackStop = 0.5;
+
+/// T = k s + c s' while the link is stretched (s > 0), clipped at zero (the damper does not push); 0 while
+/// it is slack down to the stop (-l / 2 < s <= 0): a cable carries no compression; beyond the stop
+/// (s < -l / 2) T = k (s + l / 2) + c s', clipped at zero from below (the stop pushes, never pulls).
+/// k = EA / l [N/m], c = c_a / l [N s/m], l the link's unstretched length [m].
 struct AxialSpring {
-  /// The tension [N] at stretch s [m] and rate s' [m/s].
-  static double tension(double k, double c, double s, double rate) {
-    const double t = k * s + c * rate;
-    return s > 0.0 && t > 0.0 ? t : 0.0;
+  /// How far the stretch s [m] is past the stop of a link of length l [m] (< 0 past it).
+  static double pastStop(double s, double length) { return s + kSlackStop * length; }
+  /// The tension [N] at stretch s [m] and rate s' [m/s] (negative: the stop pushes).
+  static double tension(double k, double c, double s, double rate, double length) {
+    if (s > 0.0) {
+      const double t = k * s + c * rate;
+      return t > 0.0 ? t : 0.0;
+    }
+    const double past = pastStop(s, length);
+    if (past < 0.0) {
+      const double t = k * past + c * rate;
+      return t < 0.0 ? t : 0.0;
+    }
+    return 0.0;
   }
   /// The rate [m/s] the damper c = c_a / l reads: l times the strain rate, d/dt (s / l) l = s' - s l' / l.
   /// It is s' but for the winch's link, whose unstretched length l changes at l' (the pay-out speed): a
@@ -28,12 +46,19 @@ struct AxialSpring {
   static double dampedRate(double s, double rate, double length, double length_rate) {
     return length_rate != 0.0 && length > 0.0 ? rate - s * length_rate / length : rate;
   }
-  /// Strain energy 1/2 k s^2 while stretched [J]: the tension's elastic part has this potential.
-  static double energy(double k, double s) { return s > 0.0 ? 0.5 * k * s * s : 0.0; }
-  /// The power the tension T takes out beyond the energy it stores [W], >= 0: T s' - k s s' while
-  /// stretched (c s'^2 when not clipped), 0 when slack.
-  static double loss(double k, double s, double rate, double tension) {
-    return s > 0.0 ? (tension - k * s) * rate : 0.0;
+  /// Strain energy [J]: 1/2 k s^2 while stretched, 1/2 k (s + l / 2)^2 past the stop, 0 between: the
+  /// tension's elastic part has this potential.
+  static double energy(double k, double s, double length) {
+    if (s > 0.0) return 0.5 * k * s * s;
+    const double past = pastStop(s, length);
+    return past < 0.0 ? 0.5 * k * past * past : 0.0;
+  }
+  /// The power the tension T takes out beyond the energy it stores [W], >= 0: (T - k s) s' while
+  /// stretched, (T - k (s + l / 2)) s' past the stop (c s'^2 when not clipped), 0 between.
+  static double loss(double k, double s, double rate, double tension, double length) {
+    if (s > 0.0) return (tension - k * s) * rate;
+    const double past = pastStop(s, length);
+    return past < 0.0 ? (tension - k * past) * rate : 0.0;
   }
 };
 
