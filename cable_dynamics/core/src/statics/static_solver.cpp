@@ -197,15 +197,20 @@ StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& de
   return out;
 }
 
-/// Each link's stretch under the tension at its far end, T_k = -J_{k+1} . u_k (the load's pull at the
-/// last), tension only, for the axial springs T = EA / l s (a locked last link stays rigid).
+/// The tension at link k's far end in a solution, T_k = -J_{k+1} . u_k (the load's pull at the last) [N].
+double farEndTension(const StaticSolution& solved, int k, int n) {
+  const Eigen::Vector3d outboard = k + 1 < n ? Eigen::Vector3d(solved.joint_force.col(k + 1)) : solved.tip_force;
+  return -outboard.dot(solved.axes.col(k));
+}
+
+/// Each link's stretch under the tension at its far end (farEndTension), tension only, for the axial
+/// springs T = EA / l s (a locked last link stays rigid).
 Eigen::VectorXd stretchUnderTension(const ChainModel& model, const ChainDeployment& deployed, const StaticSolution& solved,
                                     int first) {
   const int n = model.links();
   Eigen::VectorXd stretch = Eigen::VectorXd::Zero(n);
   for (int k = first; k < n; ++k) {
-    const Eigen::Vector3d outboard = k + 1 < n ? Eigen::Vector3d(solved.joint_force.col(k + 1)) : solved.tip_force;
-    const double tension = -outboard.dot(solved.axes.col(k));
+    const double tension = farEndTension(solved, k, n);
     const double spring = deployed.get(&LinkConstants::axial_stiffness, k);
     stretch(k) = spring > 0.0 && tension > 0.0 ? tension / spring : 0.0;
   }
@@ -221,8 +226,7 @@ void refuseCompression(const ChainModel& model, const ChainDeployment& deployed,
   double largest = 0.0, most = 0.0;
   int where = -1;
   for (int k = first; k < n; ++k) {
-    const Eigen::Vector3d outboard = k + 1 < n ? Eigen::Vector3d(solved.joint_force.col(k + 1)) : solved.tip_force;
-    const double tension = -outboard.dot(solved.axes.col(k));
+    const double tension = farEndTension(solved, k, n);
     largest = std::max(largest, std::abs(tension));
     if (deployed.get(&LinkConstants::axial_stiffness, k) > 0.0 && tension < most) {
       most = tension;

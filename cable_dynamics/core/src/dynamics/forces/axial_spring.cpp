@@ -45,13 +45,8 @@ double winchStrainPower(const ChainData& data, double winch_speed) {
   const LinkConstants& c = data.deployed.of(first);
   const int i = LinkBlocks::lane(first);
   const double l = c.length[i];
-  if (!(l > 0.0)) return 0.0;
-  // d/dl (EA s^2 / (2 l)) = -(EA / l) s^2 / (2 l), while stretched (a slack link stores nothing); past the
-  // stop, d/dl (EA (s + l / 2)^2 / (2 l)) = -E / l + (EA / l) (s + l / 2) / 2.
-  const double k = c.axial_stiffness[i], s = data.links.of(first).stretch[i];
-  const double past = AxialSpring::pastStop(s, l);
-  const double stop = s <= 0.0 && past < 0.0 ? k * past * kSlackStop : 0.0;
-  return winch_speed * (-AxialSpring::energy(k, s, l) / l + stop);
+  // At a fixed s, 1/2 EA e^2 / l changes with l (AxialSpring::energyPerLength).
+  return l > 0.0 ? winch_speed * AxialSpring::energyPerLength(c.axial_stiffness[i], data.links.of(first).stretch[i], l) : 0.0;
 }
 
 double axialLossAtShiftedRates(const ChainModel& model, const ChainData& data, const Eigen::VectorXd& shift) {

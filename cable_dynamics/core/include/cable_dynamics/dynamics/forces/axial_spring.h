@@ -27,18 +27,18 @@ constexpr double kSlackStop = 0.5;
 struct AxialSpring {
   /// How far the stretch s [m] is past the stop of a link of length l [m] (< 0 past it).
   static double pastStop(double s, double length) { return s + kSlackStop * length; }
-  /// The tension [N] at stretch s [m] and rate s' [m/s] (negative: the stop pushes).
-  static double tension(double k, double c, double s, double rate, double length) {
-    if (s > 0.0) {
-      const double t = k * s + c * rate;
-      return t > 0.0 ? t : 0.0;
-    }
+  /// The spring's extension [m]: s while stretched (> 0), s + l / 2 past the stop (< 0), 0 between.
+  static double extension(double s, double length) {
+    if (s > 0.0) return s;
     const double past = pastStop(s, length);
-    if (past < 0.0) {
-      const double t = k * past + c * rate;
-      return t < 0.0 ? t : 0.0;
-    }
-    return 0.0;
+    return past < 0.0 ? past : 0.0;
+  }
+  /// The tension [N] at stretch s [m] and rate s' [m/s] (negative: the stop pushes): k e + c s', with the
+  /// extension e's sign (the damper never turns a pull into a push, nor the reverse).
+  static double tension(double k, double c, double s, double rate, double length) {
+    const double e = extension(s, length);
+    const double t = k * e + c * rate;
+    return e > 0.0 ? (t > 0.0 ? t : 0.0) : e < 0.0 ? (t < 0.0 ? t : 0.0) : 0.0;
   }
   /// The rate [m/s] the damper c = c_a / l reads: l times the strain rate, d/dt (s / l) l = s' - s l' / l.
   /// It is s' but for the winch's link, whose unstretched length l changes at l' (the pay-out speed): a
@@ -46,19 +46,22 @@ struct AxialSpring {
   static double dampedRate(double s, double rate, double length, double length_rate) {
     return length_rate != 0.0 && length > 0.0 ? rate - s * length_rate / length : rate;
   }
-  /// Strain energy [J]: 1/2 k s^2 while stretched, 1/2 k (s + l / 2)^2 past the stop, 0 between: the
-  /// tension's elastic part has this potential.
+  /// Strain energy 1/2 k e^2 [J] (1/2 k s^2 while stretched, 1/2 k (s + l / 2)^2 past the stop, 0
+  /// between): the tension's elastic part has this potential.
   static double energy(double k, double s, double length) {
-    if (s > 0.0) return 0.5 * k * s * s;
-    const double past = pastStop(s, length);
-    return past < 0.0 ? 0.5 * k * past * past : 0.0;
+    const double e = extension(s, length);
+    return 0.5 * k * e * e;
   }
-  /// The power the tension T takes out beyond the energy it stores [W], >= 0: (T - k s) s' while
-  /// stretched, (T - k (s + l / 2)) s' past the stop (c s'^2 when not clipped), 0 between.
+  /// The energy's rate with the unstretched length l at a fixed s [J/m], for k = EA / l:
+  /// d/dl (EA e^2 / (2 l)) = -E / l + k e de/dl, with de/dl = l / 2's share past the stop, 0 otherwise.
+  static double energyPerLength(double k, double s, double length) {
+    const double e = extension(s, length);
+    return -0.5 * k * e * e / length + (e < 0.0 ? k * e * kSlackStop : 0.0);
+  }
+  /// The power the tension T takes out beyond the energy it stores [W], >= 0: (T - k e) s' (c s'^2 when
+  /// not clipped; 0 between stretched and the stop).
   static double loss(double k, double s, double rate, double tension, double length) {
-    if (s > 0.0) return (tension - k * s) * rate;
-    const double past = pastStop(s, length);
-    return past < 0.0 ? (tension - k * past) * rate : 0.0;
+    return (tension - k * extension(s, length)) * rate;
   }
 };
 
