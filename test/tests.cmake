@@ -195,3 +195,8 @@ target_link_libraries(test_fold_stop cable_dynamics_core ${GTEST_MAIN_LIBRARIES}
 # Static friction on the seabed: an anchor per contact point (forces/contact.h; issue 27 item 5).
 catkin_add_gtest(test_static_friction test/test_static_friction.cpp)
 target_link_libraries(test_static_friction cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+
+# The implicit step's recommended step against a tenth of it on the implicit presets (stable_step.cpp).
+catkin_add_gtest(test_implicit_step_size test/test_implicit_step_size.cpp)
+target_link_libraries(test_implicit_step_size cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_compile_definitions(test_implicit_step_size PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")

@@ -27,10 +27,10 @@ struct StableStep {
   /// simulation.integrator: implicit. Its recursion holds the joint springs and dampers, the drag, the
   /// tension's geometric stiffness, the seabed, a clamped tip and the load coupling implicitly, so no mode
   /// above limits it; its step is chosen for accuracy: h omega <= 0.25 (ROS2's frequency error there,
-  /// 0.46 % at rho_inf = 0.9, 0.52 % at 1) for the first torsional mode and the third bending mode, and at
-  /// most 10 ms [s].
+  /// 0.46 % at rho_inf = 0.9, 0.52 % at 1) for the first torsional mode, the third bending mode and the
+  /// ends' imposed motions, and at most 25 ms (measured on the presets: stable_step.cpp) [s].
   double implicit_recommended = 0.0;
-  std::string implicit_mode;  ///< the mode that sets it, or "the 10 ms cap"
+  std::string implicit_mode;  ///< the mode or motion that sets it, or "the 25 ms cap"
 };
 
 /// Whether `dt` [s] is above the step `bound` [s] as messages print it (6 significant digits, rounded to
