@@ -200,3 +200,9 @@ target_link_libraries(test_static_friction cable_dynamics_core ${GTEST_MAIN_LIBR
 catkin_add_gtest(test_implicit_step_size test/test_implicit_step_size.cpp)
 target_link_libraries(test_implicit_step_size cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
 target_compile_definitions(test_implicit_step_size PRIVATE CABLE_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
+# The statics' start from the elastic catenary (statics/catenary_start.cpp; issue 24's statics target).
+catkin_add_gtest(test_catenary_start test/test_catenary_start.cpp)
+target_link_libraries(test_catenary_start cable_dynamics_core ${GTEST_MAIN_LIBRARIES})
+target_include_directories(test_catenary_start PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/cable_dynamics/core/src/statics)
+target_compile_definitions(test_catenary_start PRIVATE BENCH_LINES_DIR="${CMAKE_CURRENT_SOURCE_DIR}/bench/moordyn/lines")

@@ -57,6 +57,7 @@ set(CABLE_CORE_SOURCES
   # statics: the equilibrium shape (the equations link by link, the starting guesses, Newton)
   ${CABLE_CORE_DIR}/src/statics/static_equations.cpp
   ${CABLE_CORE_DIR}/src/statics/static_start.cpp
+  ${CABLE_CORE_DIR}/src/statics/catenary_start.cpp
   ${CABLE_CORE_DIR}/src/statics/static_newton.cpp
   ${CABLE_CORE_DIR}/src/statics/static_solver.cpp
 )

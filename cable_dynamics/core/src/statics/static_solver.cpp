@@ -9,6 +9,7 @@
 #include "cable_dynamics/dynamics/joint_geometry.h"
 #include "cable_dynamics/dynamics/state_layout.h"
 #include "static_equations.h"
+#include "catenary_start.h"
 #include "static_newton.h"
 #include "static_start.h"
 
@@ -264,6 +265,13 @@ StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& depl
   Eigen::Matrix3d secant = Eigen::Matrix3d::Identity();  // d tip / d target, Broyden's estimate
   Eigen::Vector3d last_shift = Eigen::Vector3d::Zero(), last_tip = Eigen::Vector3d::Zero();
   statics::StaticState warm;  // the last sweep's equilibrium: the next one's start
+  // A limp uniform line on an exact anchor starts from its elastic catenary: its shape, its stretches and
+  // the hold's target that carries its anchor's pull (catenary_start.h); the first sweep is then a warm one.
+  Eigen::VectorXd catenary_stretch;
+  if (held && options.catenary_start && statics::catenaryStart(model, deployed, current, sweep_problem, warm, catenary_stretch,
+                                     sweep_problem.target_position)) {
+    if (model.axial()) sweep_problem.stretch = catenary_stretch;
+  }
   for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
     const int iterations = out.iterations;
     out = solveAtStretch(model, deployed, current, sweep_problem, options, &problem.target_position, &warm);

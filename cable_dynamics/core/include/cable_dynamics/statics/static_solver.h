@@ -19,7 +19,9 @@
 /// residual norm. Starting guess: the limp chain swept from the tip (exact without springs); with a
 /// coupled tip the tip force of that sweep is found first by a 3-unknown Newton (shooting) so that the
 /// tip meets the coupling spring; with springs and a free tip the straight cable along the clamp. When
-/// Newton stalls, continuation on the spring stiffness.
+/// Newton stalls, continuation on the spring stiffness. A limp uniform line on an exact anchor on a flat
+/// bed starts from its elastic catenary with a grounded part instead (catenary_start.h; no continuation
+/// on the bed's contact).
 ///
 /// Convergence: max over links of |force residual| / F, |moment residual| / (F l_k) and
 /// |closure residual| / l_k below `tolerance`, where F [N] is the sum of the magnitudes of every
@@ -60,6 +62,10 @@ struct StaticProblem {
 struct StaticOptions {
   double tolerance = 1e-9;  ///< relative residual (see the file comment)
   int max_iterations = 100; ///< Newton iterations, over all continuation steps
+  /// A limp uniform line on an exact anchor starts from its elastic catenary (catenary_start.h) rather
+  /// than from the line hanging through the bed and the bed's contact ramped up: the same equilibrium in a
+  /// third of the iterations on MoorDyn's chains. false: the general start (tests compare the two).
+  bool catenary_start = true;
 };
 
 struct StaticSolution {
