@@ -3,7 +3,7 @@
 // (glibc's mallinfo2: every allocation, Eigen's included) after two steps, for a preset at n links.
 // The difference between two sizes, divided by the difference in links, is the data per link: an upper
 // bound of what one step touches per link (the step reads and writes most of it, some of it once per step).
-// Usage: link_bytes CONFIG N [--set key=value ...]
+// Built by bench/CMakeLists.txt (the core from this checkout). Usage: link_bytes CONFIG N [--set key=value ...]
 #include <malloc.h>
 
 #include <cstdio>
