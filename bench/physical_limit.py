@@ -15,9 +15,12 @@ Method:
   libm's included); not counted: compares, min/max, conversions, and/xor used for abs and negation.
   Two runs of different lengths, subtracted: per step, start-up excluded. Valgrind runs the same
   AVX2/FMA copies of the hot loops (hot_path.h) as the processor does (both lack AVX-512);
-- data per link: bench/src/link_bytes.cpp (the heap a simulator holds, n = 1000 less n = 100);
+- data per link: bench/src/link_bytes.cpp (the heap a simulator holds, n = 1000 less n = 100; the
+  semi-implicit's, whose dense matrices grow as n^2, at n = 100 over 100);
 - traffic past L2: callgrind's cache simulation with this core's L1d (32 KiB, 8-way) and L2 (512 KiB,
-  8-way) as the last level: misses x 64 B (a model: no prefetcher, no L3 victim behaviour).
+  8-way) as the last level: misses x 64 B (a model: no prefetcher, no L3 victim behaviour);
+- time by function (n = 1000; the semi-implicit at 100): perf's software clock (cpu-clock, 4 kHz), the
+  shares taken over the functions the step runs, against each one's counted instructions and flops.
 """
 import argparse
 import os
@@ -201,7 +204,7 @@ def counted(binary, case, work):
                 "--compress-strings=no", "--compress-pos=no", "--collect-atstart=no",
                 "--toggle-collect=cable_dynamics::CableSimulator::step()", "--cache-sim=yes",
                 "--D1=32768,8,64", "--LL=524288,8,64"]
-        subprocess.run(args + cable_sim_args(binary, preset, integrator, dt, links, k * dt * (1 + 1e-9),
+        subprocess.run(args + cable_sim_args(binary, preset, integrator, dt, links, k * dt,
                                              os.path.join(work, "o.csv")),
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         results.append(count_callgrind(cg))
@@ -247,7 +250,7 @@ def main():
 
     # Table 1: the work and how fast it runs; table 2: the data and the bandwidth it asks for.
     work_header = ("integrator", "n", "us/step", "ns/link/step", "flop/link/step", "in packed instr.", "FMA/link",
-                   "div / sqrt /link", "instr/link", "instr/cycle", "flop/FP instr", "GFLOP/s", "of AVX2 peak",
+                   "div / sqrt instr./link", "instr/link", "instr/cycle", "flop/FP instr", "GFLOP/s", "of AVX2 peak",
                    "of scalar peak", "ns/link/step at AVX2 peak")
     data_header = ("integrator", "n", "B/link held", "heap at n", "B/link/step past L2", "GB/s past L2",
                    "of L3 triad", "of memory triad", "ns/link/step at L3 triad")

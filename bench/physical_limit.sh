@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Issue 24, the physical limit: each integrator's floating-point work and data per link and step against
 # this machine's measured peak and bandwidth (docs/performance.md, "The physical limit (issue 24)").
-# Prints figures and a table; judges nothing (not a test, not run by CI). About 10 minutes on the 2-core VM
+# Prints figures and tables; judges nothing (not a test, not run by CI). About 3 minutes on the 2-core VM
 # (valgrind's runs most of it).
-#   bash bench/physical_limit.sh [path/to/cable_sim]     # default: the catkin workspace's, /work/main_ws
+#   bash bench/physical_limit.sh [path/to/cable_sim]     # default: the workspace's (scripts/common.sh)
 # Needs: g++, cmake, valgrind, binutils (objdump), python3, perf (optional: the time by function), and a
 # Release build of the package's cable_sim.
 set -euo pipefail
 export PATH=/usr/bin:$PATH
 HERE=$(cd "$(dirname "$0")" && pwd)
 REPO=$(dirname "$HERE")
-CABLE_SIM=${1:-/work/main_ws/devel/lib/cable_dynamics/cable_sim}
+source "$REPO/scripts/common.sh"
+CABLE_SIM=${1:-$WS_DIR/devel/lib/cable_dynamics/cable_sim}
+[ -x "$CABLE_SIM" ] || { echo "no $CABLE_SIM: build first (bash scripts/test.sh) or give a cable_sim" >&2; exit 1; }
 OUT=$HERE/build/physical_limit
 mkdir -p "$OUT"
 
