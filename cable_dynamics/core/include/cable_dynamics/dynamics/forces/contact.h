@@ -189,6 +189,41 @@ inline void contactJacobian(const ContactLaw& law, const ContactPlace& place, co
   }
 }
 
+/// contactJacobian on a flat bed (normal +z at every point), factored for the sums over a link's points:
+/// the normal spring share k and damper share c ramp on z alone [N/m], [N s/m], and the friction's secant
+/// N / max(|w|, 1) [N] (0 where the point does not press or there is no friction), which multiplies one
+/// tangent pattern per link (flatFrictionPattern) over x_b in the stiffness and over v_r in the damping. The
+/// points of a link share the normal and the axis's direction along the bed, so the link's sums are sums
+/// of three scalars times fixed matrices (stiff_articulated_body.cpp, linearizeContact; test_seabed
+/// compares them with the general form's on a flat grid).
+struct FlatContactJacobian {
+  double normal_stiffness = 0.0, normal_damping = 0.0, friction_secant = 0.0;
+};
+
+EIGEN_ALWAYS_INLINE FlatContactJacobian flatContactJacobian(const ContactLaw& law, const ContactPlace& place, const Vec3& v) {
+  FlatContactJacobian j;
+  const double rate = v.z, ramp = std::min(1.0, place.delta / law.rest);
+  const double normal = contactNormalForce(law, place.delta, rate);
+  j.normal_stiffness = law.stiffness;
+  j.normal_damping = law.damping * ramp;
+  if (normal > 0.0 && law.hasFriction()) {
+    const Vec3 w = frictionArgument(law, place, Vec3{v.x, v.y, 0.0});
+    j.friction_secant = normal / std::max(std::sqrt(dot(w, w)), 1.0);
+  }
+  return j;
+}
+
+/// The friction's tangent pattern on a flat bed, mu_a a a^T + mu_l (P - a a^T) with P = I - e_z e_z^T and
+/// a the axis's direction along the bed (mu_l P where it has none) [-].
+inline Eigen::Matrix3d flatFrictionPattern(const ContactLaw& law, const ContactPlace& place) {
+  Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero();
+  tangent(0, 0) = tangent(1, 1) = 1.0;
+  if (!place.has_along) return law.friction_lateral * tangent;
+  const Eigen::Vector3d a = toEigen(place.along);
+  const Eigen::Matrix3d aa = a * a.transpose();
+  return law.friction_axial * aa + law.friction_lateral * (tangent - aa);
+}
+
 /// The law at rest, for the statics: the spring's force -share k delta n [N]. No damper (v = 0) and no
 /// friction: the statics solve the equilibrium without it, one of the equilibria the friction allows, and
 /// the anchors are then placed there.
