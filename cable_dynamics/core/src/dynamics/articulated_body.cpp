@@ -332,8 +332,10 @@ bool solveHoldForce(const ChainModel& model, ChainData& data) {
   return data.coupling.allFinite();
 }
 
-/// The backward and forward passes after linkTermsPass (solveArticulatedBody's, without the hold).
-void solvePasses(const ChainModel& model, ChainData& data, bool all_joint_forces) {
+/// The backward and forward passes after linkTermsPass (solveArticulatedBody's, without the hold). Inlined
+/// into solveArticulatedBody's clones (hot_path.h): called out of line, RK4's recursion ran as the baseline
+/// build's code in every clone (bench/physical_limit.sh: no FMA in 60 % of an RK4 step).
+EIGEN_ALWAYS_INLINE void solvePasses(const ChainModel& model, ChainData& data, bool all_joint_forces) {
   const bool axial = model.axial();
   const Vec3 base_force = axial ? backwardPass<true, false>(model, data, all_joint_forces)
                                 : backwardPass<false, false>(model, data, all_joint_forces);
