@@ -9,11 +9,16 @@ build_workspace
 source_devel_space
 
 rm -rf "$WS_DIR/build/test_results"
-# The test executables on every core first (run_tests below runs the tests one at a time, -j1, so
+# The test executables on every core first (the pytests and rostests below run one at a time, -j1, so
 # that timing tests do not compete; it would build them that way too, twice as slowly).
 catkin_make -C "$WS_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 tests -j"$(nproc)"
-# `run_tests` itself does not fail on a failing test; catkin_test_results does, below.
-catkin_make -C "$WS_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1
+# `run_tests` itself does not fail on a failing test; catkin_test_results does, below. Its three kinds
+# in turn: the gtests on every core (computation only: no test among them judges wall time; ~200 s of
+# them on one core), then the pytests and the rostests one at a time (some of them run on the wall clock:
+# the ROV exchanges, the scheduler's timeout).
+catkin_make -C "$WS_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests_cable_dynamics_gtest -j"$(nproc)"
+catkin_make -C "$WS_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests_cable_dynamics_pytest -j1
+catkin_make -C "$WS_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests_cable_dynamics_rostest -j1
 
 # The README's commands as printed (test/tooling/test_readme_commands.py). Outside catkin's run_tests
 # because one of them, scripts/run.sh, builds this workspace itself (nothing to do by then); under Xvfb
