@@ -447,7 +447,7 @@ TEST(SeabedContact, TheHotPathsFlatBedSpecializationIsTheGeneralContact) {
 
 TEST(SeabedContact, TheImplicitStepsFlatBedJacobianIsTheGeneralOne) {
   // The implicit step's linearization sums the contact's Jacobian over a link's points in a factored form on
-  // a flat bed (forces/contact.h, flatContactJacobian); a grid of one depth takes the general form, point
+  // a flat bed (forces/contact.h, contactJacobianParts); a grid of one depth takes the general form, point
   // by point. At the same state (a cable landed and sliding, with static friction's anchors): the same
   // stiffness and damping blocks on every link, to round-off (measured 2.3e-13 N s/m of 3.5e4, 6.5e-18 of the largest block; bound
   // 1e-12).

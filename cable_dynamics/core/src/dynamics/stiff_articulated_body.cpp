@@ -144,10 +144,11 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
   Eigen::Matrix3d k_m[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   Eigen::Matrix3d d_m[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   if (c.bed.flat()) {
-    // The points share the normal and the axis's direction along the bed: sum three scalars per power of s
-    // (forces/contact.h, flatContactJacobian) and form the matrices once. A quarter of a chain's implicit
-    // step went to the general form's per-point 3x3 products (MoorDyn's WD0050 heaving 5 m, perf).
-    ContactPlace place;
+    // The points share the normal and the axis's direction along the bed, so the friction's pattern: sum
+    // the Jacobian's three scalars per power of s (forces/contact.h, contactJacobianParts) and assemble
+    // once. A quarter of a chain's implicit step went to the per-point 3x3 products (MoorDyn's WD0050
+    // heaving 5 m, perf).
+    ContactPlace place;  // its normal: +z
     place.has_along = alongTheBed(toVec3(u), place.normal, place.along);
     double spring[3] = {0.0, 0.0, 0.0}, damper[3] = {0.0, 0.0, 0.0}, secant[3] = {0.0, 0.0, 0.0};
     const double depth = c.bed.shallowest();
@@ -157,18 +158,18 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
       place.delta = base.z() + s * u.z() - depth;
       if (place.delta <= 0.0) continue;
       if (anchors) place.offset = ContactAnchors::offset(anchors, j, toVec3(Eigen::Vector3d(base + s * u)));
-      const FlatContactJacobian jacobian = flatContactJacobian(law, place, toVec3(Eigen::Vector3d(velocity + s * rate)));
+      const ContactJacobianParts parts = contactJacobianParts(law, place, toVec3(Eigen::Vector3d(velocity + s * rate)));
       t.in_contact = true;
       double power = 1.0;
       for (int m = 0; m < 3; ++m) {
-        spring[m] += power * jacobian.normal_stiffness;
-        damper[m] += power * jacobian.normal_damping;
-        secant[m] += power * jacobian.friction_secant;
+        spring[m] += power * parts.normal_stiffness;
+        damper[m] += power * parts.normal_damping;
+        secant[m] += power * parts.friction_secant;
         power *= s;
       }
     }
     if (!t.in_contact) return;
-    const Eigen::Matrix3d pattern = flatFrictionPattern(law, place);
+    const Eigen::Matrix3d pattern = frictionPattern(law, place);
     const double over_breakout = law.friction_breakout > 0.0 ? 1.0 / law.friction_breakout : 0.0;
     for (int m = 0; m < 3; ++m) {
       k_m[m] = (secant[m] * over_breakout) * pattern;
@@ -176,24 +177,25 @@ void StiffArticulatedBody::linearizeContact(const ChainModel& model, const Chain
       d_m[m] = (secant[m] / law.friction_velocity) * pattern;
       d_m[m](2, 2) += damper[m];
     }
-  }
-  Eigen::Matrix3d stiffness, damper;
-  for (int j = 0; !c.bed.flat() && j < c.points; ++j) {
-    const double s = c.node[j] * l;
-    ContactPlace place;
-    const Eigen::Vector3d point = base + s * u;
-    if (!contactPlace(c.bed, toVec3(point), toVec3(u), place)) continue;
-    if (const double* anchors = data.anchors.of(k)) place.offset = ContactAnchors::offset(anchors, j, toVec3(point));
-    contactJacobian(law, place, velocity + s * rate, stiffness, damper);
-    t.in_contact = true;
-    double power = 1.0;
-    for (int m = 0; m < 3; ++m) {
-      k_m[m] += power * stiffness;
-      d_m[m] += power * damper;
-      power *= s;
+  } else {
+    Eigen::Matrix3d stiffness, damper;
+    for (int j = 0; j < c.points; ++j) {
+      const double s = c.node[j] * l;
+      ContactPlace place;
+      const Eigen::Vector3d point = base + s * u;
+      if (!contactPlace(c.bed, toVec3(point), toVec3(u), place)) continue;
+      if (const double* anchors = data.anchors.of(k)) place.offset = ContactAnchors::offset(anchors, j, toVec3(point));
+      contactJacobian(law, place, velocity + s * rate, stiffness, damper);
+      t.in_contact = true;
+      double power = 1.0;
+      for (int m = 0; m < 3; ++m) {
+        k_m[m] += power * stiffness;
+        d_m[m] += power * damper;
+        power *= s;
+      }
     }
+    if (!t.in_contact) return;
   }
-  if (!t.in_contact) return;
   const Eigen::Matrix3d x = skew(u);
   out.rr = -x * k_m[2] * x;
   out.rv = x * k_m[1];

@@ -115,28 +115,31 @@ bool catenaryStart(const ChainModel& model, const ChainDeployment& deployed, con
   if (!bed.enabled() || !bed.bed.flat() || std::abs(anchor.z() - bed.bed.shallowest()) > bed.allowed_penetration) {
     return false;
   }
+  if (StaticEquations(model, deployed, current, problem).hasBendSprings()) return false;  // its bend or tip clamp
   ElasticCatenary catenary;
   if (!catenary.solve(length, weight, axial > 0.0 ? axial : std::numeric_limits<double>::infinity(), span, rise, true)) {
     return false;
   }
   StaticProblem shifted = problem;
   const Eigen::Vector3d toward_anchor = Eigen::Vector3d(chord.x(), chord.y(), 0.0) / span;
-  const auto point = [&](double sigma) {
-    const CatenaryPoint c = catenary.at(sigma);
+  const auto point = [&](const CatenaryPoint& c) {  // in the paper frame [m]
     return Eigen::Vector3d(anchor - c.along * toward_anchor - c.height * Eigen::Vector3d::UnitZ());
   };
-  StaticEquations probe(model, deployed, current, problem);
-  if (probe.hasBendSprings()) return false;
   StaticState start;
-  start.resize(probe.links());
+  start.resize(n - first);
   Eigen::VectorXd stretches = Eigen::VectorXd::Zero(n);
-  double arc = 0.0;  // unstretched, from the base
+  // Each link from its base end's point to its far end's, sigma from the anchor; the far end's is the next
+  // link's base end.
+  double sigma = length;
+  Eigen::Vector3d base_end = point(catenary.at(sigma));
   for (int k = first; k < n; ++k) {
-    const double l = p.length(k), base_sigma = length - arc, far_sigma = std::max(length - arc - l, 0.0);
-    start.axis.col(k - first) = (point(far_sigma) - point(base_sigma)).normalized();
+    sigma = std::max(sigma - p.length(k), 0.0);
+    const CatenaryPoint far = catenary.at(sigma);
+    const Eigen::Vector3d far_end = point(far);
+    start.axis.col(k - first) = (far_end - base_end).normalized();
     const double spring = deployed.get(&LinkConstants::axial_stiffness, k);
-    if (spring > 0.0) stretches(k) = catenary.at(far_sigma).tension / spring;
-    arc += l;
+    if (spring > 0.0) stretches(k) = far.tension / spring;
+    base_end = far_end;
   }
   // The line's pull on the anchor, along its end towards the base: the hold's spring k (target - tip) must
   // give its opposite with the tip on the anchor.

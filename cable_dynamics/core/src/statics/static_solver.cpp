@@ -268,7 +268,7 @@ StaticSolution solveStatics(const ChainModel& model, const ChainDeployment& depl
   // A limp uniform line on an exact anchor starts from its elastic catenary: its shape, its stretches and
   // the hold's target that carries its anchor's pull (catenary_start.h); the first sweep is then a warm one.
   Eigen::VectorXd catenary_stretch;
-  if (held && options.catenary_start && statics::catenaryStart(model, deployed, current, sweep_problem, warm, catenary_stretch,
+  if (options.catenary_start && statics::catenaryStart(model, deployed, current, sweep_problem, warm, catenary_stretch,
                                      sweep_problem.target_position)) {
     if (model.axial()) sweep_problem.stretch = catenary_stretch;
   }

@@ -155,73 +155,60 @@ EIGEN_ALWAYS_INLINE void contactForce(const ContactLaw& law, const ContactPlace&
 /// The contact spring's potential energy at penetration delta > 0 [J]: 1/2 share k delta^2.
 inline double contactEnergy(const ContactLaw& law, double delta) { return 0.5 * law.stiffness * delta * delta; }
 
-/// The law's Jacobian at a point in contact moving at v: the stiffness -dF/dx ~ share k n n^T (the bed's
-/// curvature and the damper's ramp left out) plus the friction's anchor spring, and the damping
-/// -dF/dv ~ share c ramp n n^T plus the friction's damper: the secant N / max(|w|, 1) times its
-/// coefficients over the tangent plane, over x_b and v_r (below breakout, the stiff part, exactly; beyond
-/// it the secant, not the tangent). Both are exact where the
-/// point does not slip, the ramp is full (delta >= rest) and the bed is flat (test_force_modules).
-/// An approximation elsewhere is what the implicit step's W-method allows: it costs no order.
-inline void contactJacobian(const ContactLaw& law, const ContactPlace& place, const Eigen::Vector3d& v,
-                            Eigen::Matrix3d& stiffness, Eigen::Matrix3d& damping) {
-  const Eigen::Vector3d n = toEigen(place.normal);
-  const double rate = v.dot(n), ramp = std::min(1.0, place.delta / law.rest);
-  const double normal = contactNormalForce(law, place.delta, rate);
-  const Eigen::Matrix3d nn = n * n.transpose();
-  stiffness = law.stiffness * nn;
-  damping = (law.damping * ramp) * nn;
-  if (normal > 0.0 && law.hasFriction()) {
-    const Vec3 w = frictionArgument(law, place, toVec3(Eigen::Vector3d(v - rate * n)));
-    // The secant N / max(|w|, 1) times the coefficients over the tangent plane, per unit of w; w has
-    // 1 / v_r per unit of slip speed and 1 / x_b per unit of offset from the anchor.
-    const double scale = normal / std::max(std::sqrt(dot(w, w)), 1.0);
-    const Eigen::Matrix3d tangent = Eigen::Matrix3d::Identity() - nn;
-    Eigen::Matrix3d coefficients;
-    if (place.has_along) {
-      const Eigen::Vector3d a = toEigen(place.along);
-      const Eigen::Matrix3d aa = a * a.transpose();
-      coefficients = scale * (law.friction_axial * aa + law.friction_lateral * (tangent - aa));
-    } else {
-      coefficients = (scale * law.friction_lateral) * tangent;
-    }
-    damping += (1.0 / law.friction_velocity) * coefficients;
-    if (law.friction_breakout > 0.0) stiffness += (1.0 / law.friction_breakout) * coefficients;
-  }
-}
-
-/// contactJacobian on a flat bed (normal +z at every point), factored for the sums over a link's points:
-/// the normal spring share k and damper share c ramp on z alone [N/m], [N s/m], and the friction's secant
-/// N / max(|w|, 1) [N] (0 where the point does not press or there is no friction), which multiplies one
-/// tangent pattern per link (flatFrictionPattern) over x_b in the stiffness and over v_r in the damping. The
-/// points of a link share the normal and the axis's direction along the bed, so the link's sums are sums
-/// of three scalars times fixed matrices (stiff_articulated_body.cpp, linearizeContact; test_seabed
-/// compares them with the general form's on a flat grid).
-struct FlatContactJacobian {
+/// The law's Jacobian at a point in contact moving at v [m/s], in factored form: the normal spring share k
+/// and damper share c ramp along n n^T [N/m], [N s/m], and the friction's secant N / max(|w|, 1) [N] (0 where
+/// the point does not press or there is no friction), which multiplies the tangent pattern
+/// (frictionPattern) over x_b in the stiffness and over v_r in the damping (w has 1 / v_r per unit of slip
+/// speed and 1 / x_b per unit of offset from the anchor). contactJacobian assembles it per point; on a
+/// flat bed, where a link's points share n and the pattern, the implicit step sums the three scalars over
+/// the points and assembles once per link (stiff_articulated_body.cpp, linearizeContact).
+struct ContactJacobianParts {
   double normal_stiffness = 0.0, normal_damping = 0.0, friction_secant = 0.0;
 };
 
-EIGEN_ALWAYS_INLINE FlatContactJacobian flatContactJacobian(const ContactLaw& law, const ContactPlace& place, const Vec3& v) {
-  FlatContactJacobian j;
-  const double rate = v.z, ramp = std::min(1.0, place.delta / law.rest);
+EIGEN_ALWAYS_INLINE ContactJacobianParts contactJacobianParts(const ContactLaw& law, const ContactPlace& place,
+                                                             const Vec3& v) {
+  ContactJacobianParts j;
+  const double rate = dot(v, place.normal), ramp = std::min(1.0, place.delta / law.rest);
   const double normal = contactNormalForce(law, place.delta, rate);
   j.normal_stiffness = law.stiffness;
   j.normal_damping = law.damping * ramp;
   if (normal > 0.0 && law.hasFriction()) {
-    const Vec3 w = frictionArgument(law, place, Vec3{v.x, v.y, 0.0});
+    const Vec3 w = frictionArgument(law, place, v - rate * place.normal);
     j.friction_secant = normal / std::max(std::sqrt(dot(w, w)), 1.0);
   }
   return j;
 }
 
-/// The friction's tangent pattern on a flat bed, mu_a a a^T + mu_l (P - a a^T) with P = I - e_z e_z^T and
-/// a the axis's direction along the bed (mu_l P where it has none) [-].
-inline Eigen::Matrix3d flatFrictionPattern(const ContactLaw& law, const ContactPlace& place) {
-  Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero();
-  tangent(0, 0) = tangent(1, 1) = 1.0;
+/// The friction's coefficients over the bed's tangent plane per unit of w, mu_a a a^T + mu_l (P - a a^T)
+/// with P = I - n n^T and a the axis's direction along the bed (mu_l P where it has none) [-].
+inline Eigen::Matrix3d frictionPattern(const ContactLaw& law, const ContactPlace& place) {
+  const Eigen::Vector3d n = toEigen(place.normal);
+  const Eigen::Matrix3d tangent = Eigen::Matrix3d::Identity() - n * n.transpose();
   if (!place.has_along) return law.friction_lateral * tangent;
   const Eigen::Vector3d a = toEigen(place.along);
   const Eigen::Matrix3d aa = a * a.transpose();
   return law.friction_axial * aa + law.friction_lateral * (tangent - aa);
+}
+
+/// The law's Jacobian at one point: the stiffness -dF/dx ~ share k n n^T (the bed's curvature and the
+/// damper's ramp left out) plus the friction's anchor spring, and the damping -dF/dv ~ share c ramp n n^T
+/// plus the friction's damper (contactJacobianParts: below breakout, the stiff part, exactly; beyond it the
+/// secant, not the tangent). Both are exact where the point does not slip, the ramp is full
+/// (delta >= rest) and the bed is flat (test_force_modules). An approximation elsewhere is what the
+/// implicit step's W-method allows: it costs no order.
+inline void contactJacobian(const ContactLaw& law, const ContactPlace& place, const Eigen::Vector3d& v,
+                            Eigen::Matrix3d& stiffness, Eigen::Matrix3d& damping) {
+  const ContactJacobianParts parts = contactJacobianParts(law, place, toVec3(v));
+  const Eigen::Vector3d n = toEigen(place.normal);
+  const Eigen::Matrix3d nn = n * n.transpose();
+  stiffness = parts.normal_stiffness * nn;
+  damping = parts.normal_damping * nn;
+  if (parts.friction_secant > 0.0) {
+    const Eigen::Matrix3d pattern = frictionPattern(law, place);
+    damping += (parts.friction_secant / law.friction_velocity) * pattern;
+    if (law.friction_breakout > 0.0) stiffness += (parts.friction_secant / law.friction_breakout) * pattern;
+  }
 }
 
 /// The law at rest, for the statics: the spring's force -share k delta n [N]. No damper (v = 0) and no
