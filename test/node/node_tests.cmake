@@ -18,6 +18,7 @@ add_rostest(test/scene.test DEPENDENCIES cable_dynamics_node)
 # Issue 26: a light ROV exchanging poses and wrenches with the node, against the same case in the body mode;
 # the node with the ROV simulated here (load.mode body).
 add_rostest(test/rov_client.test DEPENDENCIES cable_dynamics_node cable_dynamics_python)
+add_rostest(test/rov_client_elastic.test DEPENDENCIES cable_dynamics_node cable_dynamics_python)
 add_rostest(test/body_mode.test DEPENDENCIES cable_dynamics_node)
 foreach(script test_bad_config.py test_sim_time.py test_log_flood.py test_launch_file.py test_catch_up.py
     test_scene.py test_seabed_node.py test_rov_client.py test_body_mode_node.py test_fuzz_commands.py)
