@@ -5,6 +5,8 @@
 # install in install/, its validation references in tests/Mooring/) or at its install prefix (no OrcaFlex
 # series then). Without MOORDYN_DIR this prints a line and exits 0: nothing in CI needs MoorDyn.
 #   MOORDYN_DIR=/path/to/MoorDyn bash bench/moordyn/run.sh [repetitions, default 5]
+# MDB_ONLY=<line> runs one line of the table; MDB_ONLY=grounded only the grounded catenary's statics
+# (moordyn_grounded.cpp), which otherwise follows the whole table.
 # Builds under nice into bench/moordyn/build/ (-j1: the machine is shared; BENCH_JOBS to change).
 set -euo pipefail
 if [[ -z "${MOORDYN_DIR:-}" ]]; then
@@ -23,4 +25,10 @@ rm -rf "$BUILD/lines" && cp -r "$HERE/lines" "$BUILD/lines"
 LIB="$(dirname "$(find "$MOORDYN_DIR" -name 'libmoordyn.so*' -print -quit)")"
 cd "$BUILD"
 echo "[moordyn bench] $(date -u '+%F %T UTC'); uptime: $(uptime)" | tee "$BUILD/results.txt"
-LD_LIBRARY_PATH="$LIB:${LD_LIBRARY_PATH:-}" ./moordyn_bench "$BUILD/lines" "${1:-5}" "$MOORDYN_DIR" | tee -a "$BUILD/results.txt"
+if [[ "${MDB_ONLY:-}" != grounded ]]; then
+  LD_LIBRARY_PATH="$LIB:${LD_LIBRARY_PATH:-}" ./moordyn_bench "$BUILD/lines" "${1:-5}" "$MOORDYN_DIR" | tee -a "$BUILD/results.txt"
+fi
+# The grounded elastic catenary (moordyn_grounded.cpp): after the whole table, or alone with MDB_ONLY=grounded.
+if [[ -z "${MDB_ONLY:-}" || "${MDB_ONLY}" == grounded ]]; then
+  LD_LIBRARY_PATH="$LIB:${LD_LIBRARY_PATH:-}" ./moordyn_grounded | tee -a "$BUILD/results.txt"
+fi
