@@ -424,7 +424,10 @@ GroundedErrors groundedStatics(const std::vector<double>& links, double span) {
 // a link (grounded 72.0, 71.5, 71.0, 71.375 m against 71.31 m): a rigid link cannot follow the catenary off
 // the bed, the line beyond sits as if the touchdown were up to half a link off, at heights off by up to
 // the curvature there (w / H = 0.093 1/m) times l^2 / 8, and H moves 0.018 % per mm of the fairlead's
-// height. The 0.1 % at n = 50 is NOT met with equal links (0.16 % and 0.30 %). With the 50 links
+// height. The 0.1 % at n = 50 is NOT met with equal links (0.16 % and 0.30 %), nor by MoorDyn 2.7.1's
+// lumped masses on the same line (bench/moordyn/moordyn_grounded.cpp, its statics converged to 1e-8 of a
+// node's weight): +0.071 % and +0.12 % at this span, but +0.36 % and +0.75 % at 89 m (here +0.42 % and
+// +0.88 %), -0.46 % and -0.91 % at n = 25: the touchdown's quantization bounds both. With the 50 links
 // placed as a mooring analyst places them (24 of 1 m down the catenary, 16 of 0.5 m across the touchdown,
 // 10 of 6.8 m on the bed), over five spans (89 to 91 m, the touchdown moving 4 m within the fine links):
 // within 3.5e-4 (fairlead) and 7.5e-4 (anchor), within 0.1 % but not by the 3x margin the bounds here
