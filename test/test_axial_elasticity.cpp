@@ -16,6 +16,7 @@
 #include "cable_dynamics/dynamics/state_layout.h"
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
+#include "reference/grounded_catenary.h"
 
 using namespace cable_dynamics;
 
@@ -334,42 +335,8 @@ void irvineTensions(double span, double rise, double length, double w, double ea
 
 }  // namespace
 
-namespace {
-
-/// The elastic catenary with a grounded part on a frictionless flat bed (Irvine, "Cable Structures", 1981,
-/// ch. 2, with the anchor on the bed): a line of unstretched length L, submerged weight w [N/m] and EA [N]
-/// from the anchor to a fairlead `span` out and `rise` up [m]. With H the horizontal tension and V the
-/// fairlead's vertical tension the suspended length is V / w, and
-///   span = L - V / w + (H / w) asinh(V / H) + H L / EA,   rise = (H / w) (sqrt(1 + (V / H)^2) - 1) + V^2 / (2 w EA).
-/// rise grows with V at a fixed H, span with H at the V that meets the rise: two nested bisections.
-struct GroundedCatenary {
-  double horizontal = 0.0, vertical = 0.0;  // H, V [N]
-};
-
-GroundedCatenary groundedCatenary(double span, double rise, double length, double w, double ea) {
-  auto vertical_for = [&](double h) {
-    double lo = 0.0, hi = w * length;
-    for (int i = 0; i < 200; ++i) {
-      const double v = 0.5 * (lo + hi);
-      const double z = h / w * (std::sqrt(1.0 + v * v / (h * h)) - 1.0) + v * v / (2.0 * w * ea);
-      (z < rise ? lo : hi) = v;
-    }
-    return 0.5 * (lo + hi);
-  };
-  double lo = 1e-9 * w * length, hi = 100.0 * w * length;
-  for (int i = 0; i < 200; ++i) {
-    const double h = std::sqrt(lo * hi);  // bisection in log H
-    const double v = vertical_for(h);
-    const double x = length - v / w + h / w * std::asinh(v / h) + h * length / ea;
-    (x < span ? lo : hi) = h;
-  }
-  GroundedCatenary out;
-  out.horizontal = std::sqrt(lo * hi);
-  out.vertical = vertical_for(out.horizontal);
-  return out;
-}
-
-}  // namespace
+using cable_reference::GroundedCatenary;
+using cable_reference::groundedCatenary;
 
 namespace {
 

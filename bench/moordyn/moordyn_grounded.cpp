@@ -19,6 +19,7 @@
 
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
+#include "reference/grounded_catenary.h"  // test/reference: the test's closed form
 
 namespace {
 
@@ -29,29 +30,14 @@ const double kW = (kMass - kRho * kPi * kDiameter * kDiameter / 4.0) * kG;   // 
 constexpr double kDepth = 50.0;  // m: MoorDyn's water depth, the anchor on its bed, the fairlead 30 m down
                                  // (off the free surface, where MoorDyn would take a node as half dry)
 
-/// Irvine's elastic catenary with a grounded part on a frictionless bed (the test's groundedCatenary): H
-/// [N] and the fairlead's V [N] from span = L - V/w + H/w asinh(V/H) + H L/EA and
-/// rise = H/w (sqrt(1 + (V/H)^2) - 1) + V^2/(2 w EA); the suspended length is V/w. Two nested bisections.
+/// Irvine's elastic catenary with a grounded part on a frictionless bed at this line's rise, length, w and EA
+/// (test/reference/grounded_catenary.h, the test's truth): H and the fairlead's V [N].
 struct Closed {
   double H = 0, V = 0;
 };
 Closed groundedCatenary(double span) {
-  auto vertical_for = [&](double h) {
-    double lo = 0.0, hi = kW * kLength;
-    for (int i = 0; i < 200; ++i) {
-      const double v = 0.5 * (lo + hi);
-      const double z = h / kW * (std::sqrt(1.0 + v * v / (h * h)) - 1.0) + v * v / (2.0 * kW * kEA);
-      (z < kRise ? lo : hi) = v;
-    }
-    return 0.5 * (lo + hi);
-  };
-  double lo = 1e-9 * kW * kLength, hi = 100.0 * kW * kLength;
-  for (int i = 0; i < 200; ++i) {
-    const double h = std::sqrt(lo * hi);
-    const double v = vertical_for(h);
-    ((kLength - v / kW + h / kW * std::asinh(v / h) + h * kLength / kEA) < span ? lo : hi) = h;
-  }
-  return {std::sqrt(lo * hi), vertical_for(std::sqrt(lo * hi))};
+  const cable_reference::GroundedCatenary c = cable_reference::groundedCatenary(span, kRise, kLength, kW, kEA);
+  return {c.horizontal, c.vertical};
 }
 
 /// One side's statics: the fairlead tension and the anchor's horizontal pull [N], the suspended length
