@@ -358,7 +358,6 @@ void irvineTensions(double span, double rise, double length, double w, double ea
 }  // namespace
 
 using cable_reference::GroundedCatenary;
-using cable_reference::groundedCatenary;
 
 namespace {
 
@@ -371,20 +370,13 @@ struct GroundedErrors {
 
 /// The grounded line below with link lengths `links` [m] at a horizontal span `span` [m].
 CableParams groundedLine(const std::vector<double>& links, double span) {
-  std::string lengths;
-  for (double l : links) lengths += (lengths.empty() ? "" : ", ") + std::to_string(l);
-  return loadConfigString("cable: {links: " + std::to_string(links.size()) + ", link_lengths: [" + lengths +
-                          "], diameter: 0.05, mass_per_length: 8.0, axial_stiffness: 2.0e5, stiffness: {model: paper}}\n"
-                          "load: {mass: 0.001, mode: anchored, motion: {offset: [" + std::to_string(span) + ", 0.0, 80.0]}}\n"
-                          "fluid: {density: 1025.0, drag_normal: 1.2, drag_tangential: 0.0, added_mass: 1.0}\n"
-                          "seabed: {depth: 20.0, stiffness: 1.0e6, damping_ratio: 0.5}\n"
-                          "initial: {mode: equilibrium}\nsimulation: {integrator: implicit, dt: 0.01}\n");
+  return loadConfigString(cable_reference::grounded_line::projectConfig(links, span));
 }
 
 GroundedErrors groundedStatics(const std::vector<double>& links, double span) {
-  const double length = 100.0, rise = 20.0, ea = 2.0e5;
-  const double w = (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4.0) * 9.81;
-  const GroundedCatenary exact = groundedCatenary(span, rise, length, w, ea);
+  namespace line = cable_reference::grounded_line;
+  const double length = line::kLength, w = line::weight();
+  const GroundedCatenary exact = line::closedForm(span);
   CableSimulator sim(groundedLine(links, span), SimulatorUse::kStaticsOnly);
   SimulationSnapshot s;
   sim.snapshot(s);

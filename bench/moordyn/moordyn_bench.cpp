@@ -16,7 +16,6 @@
 //     of the reference series MoorDyn's tests read, under the MoorDyn source dir's tests/Mooring/), and its
 //     error.
 // Usage: moordyn_bench <lines dir> [reps] [MoorDyn source dir or ""]
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -34,6 +33,7 @@
 
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
+#include "mute_stdout.h"
 
 namespace {
 
@@ -145,28 +145,8 @@ struct Deployment {
   std::vector<double> speed;
 };
 
-/// MoorDyn writes to stdout while reading a file and solving its initial condition: muted around those
-/// (MDB_VERBOSE=1 in the environment: not muted, and every run's tension series printed).
+/// MDB_VERBOSE=1 in the environment: MoorDyn's stdout not muted, and every run's tension series printed.
 const bool kVerbose = std::getenv("MDB_VERBOSE") != nullptr;
-struct MuteStdout {
-  int saved = -1;
-  MuteStdout() {
-    if (kVerbose) return;
-    std::fflush(stdout);
-    std::cout.flush();
-    saved = dup(1);
-    FILE* null = std::fopen("/dev/null", "w");
-    dup2(fileno(null), 1);
-    std::fclose(null);
-  }
-  ~MuteStdout() {
-    if (saved < 0) return;
-    std::fflush(stdout);
-    std::cout.flush();
-    dup2(saved, 1);
-    close(saved);
-  }
-};
 
 /// `per_step`: one MoorDyn_Step call per MoorDyn time step; otherwise one call per 0.1 s sample, as
 /// MoorDyn's chain test drives it (MoorDyn then takes its steps within the call).
@@ -175,7 +155,7 @@ Run runMoorDyn(const std::string& file, const Heave& heave, double duration, con
   Run run;
   MoorDyn md;
   {
-    MuteStdout mute;
+    MuteStdout mute(!kVerbose);
     md = MoorDyn_Create(file.c_str());
     if (md && !kVerbose) MoorDyn_SetVerbosity(md, MOORDYN_NO_OUTPUT);
   }
@@ -189,7 +169,7 @@ Run runMoorDyn(const std::string& file, const Heave& heave, double duration, con
   double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0}, f[3];
   int status;
   {
-    MuteStdout mute;
+    MuteStdout mute(!kVerbose);
     status = MoorDyn_Init(md, x, xd);  // its initial condition solve (dynamic relaxation): not timed
   }
   if (status != MOORDYN_SUCCESS) return MoorDyn_Close(md), run.ok = false, run.note = "MoorDyn_Init failed", run;
@@ -643,7 +623,7 @@ int main(int argc, char** argv) {
       double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0};
       double f[3] = {0, 0, 0};
       {
-        MuteStdout mute;
+        MuteStdout mute(!kVerbose);
         md = MoorDyn_Create((dir + "/payout50.txt").c_str());
         if (md && !kVerbose) MoorDyn_SetVerbosity(md, MOORDYN_NO_OUTPUT);
         if (md && MoorDyn_Init(md, x, xd) == MOORDYN_SUCCESS) MoorDyn_GetPointForce(MoorDyn_GetPoint(md, 2), f);

@@ -6,7 +6,6 @@
 // SimulatorUse::kStaticsOnly on the test's own config (groundedLine). MoorDyn is linked, never copied;
 // its input files are written here, in the working directory (run.sh runs this in bench/moordyn/build/).
 // Usage: moordyn_grounded (run.sh runs it after the table; MDB_ONLY=grounded runs it alone).
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -19,26 +18,18 @@
 
 #include "cable_dynamics/params/config_loader.h"
 #include "cable_dynamics/simulation/cable_simulator.h"
-#include "reference/grounded_catenary.h"  // test/reference: the test's closed form
+#include "mute_stdout.h"
+#include "reference/grounded_catenary.h"  // test/reference: the test's line and closed form
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kLength = 100.0, kRise = 20.0, kEA = 2.0e5;  // m, m, N
-constexpr double kMass = 8.0, kDiameter = 0.05, kRho = 1025.0, kG = 9.81;  // kg/m, m, kg/m^3, m/s^2
-const double kW = (kMass - kRho * kPi * kDiameter * kDiameter / 4.0) * kG;   // submerged weight [N/m]
+// The test's line (test/reference/grounded_catenary.h) [m, N, kg/m, m, kg/m^3, m/s^2, N/m].
+namespace line = cable_reference::grounded_line;
+constexpr double kLength = line::kLength, kRise = line::kRise, kEA = line::kAxialStiffness;
+constexpr double kMass = line::kMassPerLength, kDiameter = line::kDiameter, kRho = line::kWaterDensity, kG = line::kGravity;
+const double kW = line::weight();  // submerged weight [N/m]
 constexpr double kDepth = 50.0;  // m: MoorDyn's water depth, the anchor on its bed, the fairlead 30 m down
                                  // (off the free surface, where MoorDyn would take a node as half dry)
-
-/// Irvine's elastic catenary with a grounded part on a frictionless bed at this line's rise, length, w and EA
-/// (test/reference/grounded_catenary.h, the test's truth): H and the fairlead's V [N].
-struct Closed {
-  double H = 0, V = 0;
-};
-Closed groundedCatenary(double span) {
-  const cable_reference::GroundedCatenary c = cable_reference::groundedCatenary(span, kRise, kLength, kW, kEA);
-  return {c.horizontal, c.vertical};
-}
 
 /// One side's statics: the fairlead tension and the anchor's horizontal pull [N], the suspended length
 /// [m], and for MoorDyn how far from equilibrium its initial condition solve stopped.
@@ -51,23 +42,6 @@ struct Statics {
   double wall = 0;         // s
 };
 
-/// Silences MoorDyn's stdout around its file reading and initial condition solve.
-struct MuteStdout {
-  int saved;
-  MuteStdout() {
-    std::fflush(stdout);
-    saved = dup(1);
-    FILE* null = std::fopen("/dev/null", "w");
-    dup2(fileno(null), 1);
-    std::fclose(null);
-  }
-  ~MuteStdout() {
-    std::fflush(stdout);
-    dup2(saved, 1);
-    close(saved);
-  }
-};
-
 /// MoorDyn on n equal segments, the bed stiffness kbot [Pa/m: N/m^2 of bed per m of depth and m of
 /// diameter], its initial condition solver: `dynamic` false is 2.7.1's default (the "stationary" solve,
 /// positions driven by the accelerations), true the older dynamic relaxation (ICgenDynamic 1, drag x5).
@@ -75,7 +49,7 @@ Statics runMoorDyn(int n, double span, double kbot, bool dynamic) {
   // The bed's damping: critical for a node bouncing on it (cBot d l v against 2 sqrt(k m), its mass with
   // the normal added mass, m + rho pi d^2/4 = 10.0 kg/m); without it the dynamic relaxation leaves the
   // grounded nodes ringing on the bed. Static results do not depend on it.
-  const double m_a = kMass + kRho * kPi * kDiameter * kDiameter / 4.0;  // kg/m
+  const double m_a = kMass + kRho * M_PI * kDiameter * kDiameter / 4.0;  // kg/m
   const double cbot = 2.0 * std::sqrt(kbot * m_a / kDiameter);           // Pa s/m
   // dtM 0.5 ms: within the axial (0.0199 s period at n = 200) and the bed's (6.3 ms at kBot 2e8, n = 50)
   // periods. threshIC: the stationary solve stops when its acceleration sum falls 1e-10 below its start's
@@ -157,15 +131,8 @@ Statics runMoorDyn(int n, double span, double kbot, bool dynamic) {
 
 /// The project's statics on the test's groundedLine (equal links; its bed 1e6 N/m per m, 59 um deep).
 Statics runProject(int n, double span) {
-  std::string lengths;
-  for (int i = 0; i < n; ++i) lengths += (i ? ", " : "") + std::to_string(kLength / n);
-  const cable_dynamics::CableParams params = cable_dynamics::loadConfigString(
-      "cable: {links: " + std::to_string(n) + ", link_lengths: [" + lengths +
-      "], diameter: 0.05, mass_per_length: 8.0, axial_stiffness: 2.0e5, stiffness: {model: paper}}\n"
-      "load: {mass: 0.001, mode: anchored, motion: {offset: [" + std::to_string(span) + ", 0.0, 80.0]}}\n"
-      "fluid: {density: 1025.0, drag_normal: 1.2, drag_tangential: 0.0, added_mass: 1.0}\n"
-      "seabed: {depth: 20.0, stiffness: 1.0e6, damping_ratio: 0.5}\n"
-      "initial: {mode: equilibrium}\nsimulation: {integrator: implicit, dt: 0.01}\n");
+  const cable_dynamics::CableParams params =
+      cable_dynamics::loadConfigString(line::projectConfig(std::vector<double>(n, kLength / n), span));
   Statics out;
   const auto start = std::chrono::steady_clock::now();
   cable_dynamics::CableSimulator sim(params, cable_dynamics::SimulatorUse::kStaticsOnly);
@@ -179,13 +146,15 @@ Statics runProject(int n, double span) {
   return out;
 }
 
-void row(const char* side, int n, double span, double kbot, const Statics& s, const Closed& c) {
+/// One row: the side's errors against the closed form `c` at `span`.
+void row(const char* side, int n, double span, double kbot, const Statics& s, const cable_reference::GroundedCatenary& c) {
   if (!s.ok) {
     std::printf("%-15s %4d %6.1f %8.0e  FAILED\n", side, n, span, kbot);
     return;
   }
   std::printf("%-15s %4d %6.1f %8.0e %+9.3f %+9.3f %9.3f %8.3f", side, n, span, kbot,
-              100 * (s.fairlead / std::hypot(c.H, c.V) - 1), 100 * (s.anchor_h / c.H - 1), s.suspended, c.V / kW);
+              100 * (s.fairlead / std::hypot(c.horizontal, c.vertical) - 1), 100 * (s.anchor_h / c.horizontal - 1),
+              s.suspended, c.vertical / kW);
   if (s.residual > 0 || s.h_spread > 0)
     std::printf(" %10.1e %10.1e %10.2g", s.residual, s.h_spread, 1e3 * s.penetration);
   else
@@ -206,14 +175,14 @@ int main() {
   std::printf("%-15s %4s %6s %8s %9s %9s %9s %8s %10s %10s %10s %7s\n", "side", "n", "span", "kBot", "fair [%]",
               "anch H[%]", "susp. [m]", "V/w [m]", "resid.", "H spread", "pen. [mm]", "wall[s]");
   const double kbot = 2.0e7;  // Pa/m: kBot d = 1e6 N/m per m of line, the project's bed; 59 um deep
-  const Closed c90 = groundedCatenary(90.0);
+  const cable_reference::GroundedCatenary c90 = line::closedForm(90.0);
   for (int n : {25, 50, 100, 200}) {
     row("MoorDyn", n, 90.0, kbot, runMoorDyn(n, 90.0, kbot, false), c90);
     row("cable_dynamics", n, 90.0, 1e6 / kDiameter, runProject(n, 90.0), c90);
   }
   std::printf("-- spans at n = 50\n");
   for (double span : {89.0, 89.5, 90.5, 91.0}) {
-    const Closed c = groundedCatenary(span);
+    const cable_reference::GroundedCatenary c = line::closedForm(span);
     row("MoorDyn", 50, span, kbot, runMoorDyn(50, span, kbot, false), c);
     row("cable_dynamics", 50, span, 1e6 / kDiameter, runProject(50, span), c);
   }

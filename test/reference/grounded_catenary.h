@@ -5,6 +5,8 @@
 ///        equations, apart from the project's own catenary start (core/src/statics/catenary_start.cpp).
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace cable_reference {
 
@@ -41,5 +43,40 @@ inline GroundedCatenary groundedCatenary(double span, double rise, double length
   out.vertical = vertical_for(out.horizontal);
   return out;
 }
+
+/// The grounded line of test_axial_elasticity (TheStaticsIsTheElasticCatenaryWithAGroundedPart), which
+/// bench/moordyn/moordyn_grounded.cpp also gives MoorDyn: 100 m of 8 kg/m, 0.05 m, EA 2e5 N in water of
+/// 1025 kg/m^3 (g = 9.81), from an anchor on a frictionless flat bed to a fairlead 20 m above it.
+namespace grounded_line {
+constexpr double kLength = 100.0, kRise = 20.0, kAxialStiffness = 2.0e5;   // m, m, N
+constexpr double kMassPerLength = 8.0, kDiameter = 0.05;                    // kg/m, m
+constexpr double kWaterDensity = 1025.0, kGravity = 9.81;                   // kg/m^3, m/s^2
+/// The submerged weight w [N/m].
+inline double weight() {
+  return (kMassPerLength - kWaterDensity * M_PI * kDiameter * kDiameter / 4.0) * kGravity;
+}
+/// Its closed form at a horizontal span `span` [m].
+inline GroundedCatenary closedForm(double span) {
+  return groundedCatenary(span, kRise, kLength, weight(), kAxialStiffness);
+}
+/// The project's config of it (YAML) with link lengths `links` [m] (their sum is kLength) at `span` [m]: the
+/// anchor exact, a 1 g point at the tip (a massless anchored tip locks the last link's stretch), the bed
+/// 1e6 N/m^2 (it rests 59 um deep), the statics from the elastic catenary (initial.mode: equilibrium).
+inline std::string projectConfig(const std::vector<double>& links, double span) {
+  std::string lengths;
+  for (double l : links) lengths += (lengths.empty() ? "" : ", ") + std::to_string(l);
+  return "cable: {links: " + std::to_string(links.size()) + ", link_lengths: [" + lengths +
+         "], diameter: " + std::to_string(kDiameter) + ", mass_per_length: " + std::to_string(kMassPerLength) +
+         ", axial_stiffness: " + std::to_string(kAxialStiffness) + ", stiffness: {model: paper}}\n"
+         // The anchor, as an offset from the tip hanging straight down kLength below the base: kRise below
+         // the base (on the bed) and `span` out.
+         "load: {mass: 0.001, mode: anchored, motion: {offset: [" + std::to_string(span) + ", 0.0, " +
+         std::to_string(kLength - kRise) + "]}}\n"
+         "fluid: {density: " + std::to_string(kWaterDensity) + ", drag_normal: 1.2, drag_tangential: 0.0, added_mass: 1.0}\n"
+         "gravity: " + std::to_string(kGravity) + "\n"
+         "seabed: {depth: " + std::to_string(kRise) + ", stiffness: 1.0e6, damping_ratio: 0.5}\n"
+         "initial: {mode: equilibrium}\nsimulation: {integrator: implicit, dt: 0.01}\n";
+}
+}  // namespace grounded_line
 
 }  // namespace cable_reference
