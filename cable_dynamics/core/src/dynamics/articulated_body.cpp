@@ -233,8 +233,11 @@ EIGEN_ALWAYS_INLINE Vec3 forwardPass(const ChainModel& model, const ChainDeploym
     const int count = std::min(kBlockLanes, n - b * kBlockLanes);
     for (int i = std::max(0, first - b * kBlockLanes); i < count; ++i) {
       block.delta_acc.set(i, d);
-      const Vec3 off = offset[i];
-      d = {dot(row_x[i], d) + off.x, dot(row_y[i], d) + off.y, dot(row_z[i], d) + off.z};
+      // c_k first: each component is then three fused multiply-adds in a row on the serial chain, not a
+      // product, two of them and an addition.
+      const Vec3 off = offset[i], rx = row_x[i], ry = row_y[i], rz = row_z[i];
+      d = {off.x + rx.x * d.x + rx.y * d.y + rx.z * d.z, off.y + ry.x * d.x + ry.y * d.y + ry.z * d.z,
+           off.z + rz.x * d.x + rz.y * d.y + rz.z * d.z};
     }
   }
   return d;
