@@ -453,6 +453,12 @@ int main(int argc, char** argv) {
     std::snprintf(amplitude, sizeof amplitude, "base.motion.amplitude=[0, 0, %.17g]", line.heave);
     std::vector<std::string> heave_override;
     if (!std::isnan(line.heave)) heave_override.push_back(amplitude);
+    // MDB_PROJECT_SET: more overrides for the project's sides only (as cable_sim's --set, separated by
+    // spaces), e.g. "cable.links=152": the project at another discretization than MoorDyn's.
+    if (const char* extra = std::getenv("MDB_PROJECT_SET")) {
+      std::istringstream words(extra);
+      for (std::string word; words >> word;) heave_override.push_back(word);
+    }
     // The references.
     double ref_inext, ref_elastic, ref_end = 0.0;
     if (line.payout) {
