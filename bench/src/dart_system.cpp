@@ -7,54 +7,26 @@
 // DART ships dart::integration::RK4Integrator, but it drives an IntegrableSystem, an interface that
 // Skeleton does not implement in DART 6 (World steps with semi-implicit Euler only): there is no DART
 // RK4 to call on a Skeleton as it is, so the RK4 is written here around DART's own calls.
-#include <malloc.h>
-
-#include <dart/dynamics/BallJoint.hpp>
 #include <dart/dynamics/BodyNode.hpp>
-#include <dart/dynamics/Inertia.hpp>
 #include <dart/dynamics/Skeleton.hpp>
 
 #include "chain_spec.h"
+#include "dart_chain.h"
 
 namespace bench {
 namespace {
 
-using dart::dynamics::BallJoint;
 using dart::dynamics::BodyNode;
-using dart::dynamics::Inertia;
 using dart::dynamics::SkeletonPtr;
 
 class DartSystem : public System {
  public:
   explicit DartSystem(const ChainSpec& spec) : spec_(spec) {
-    // DART 6 reallocates its dof x dof caches (mass matrix and friends) on every body it adds: O(n^2)
-    // bytes each, O(n^3) in all. Served from fresh mmap'd pages that takes minutes at n = 1000; from
-    // a heap that keeps its memory, about 4x less. Only while building: default settings again below.
-    mallopt(M_MMAP_THRESHOLD, 1 << 30);
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
-    mallopt(M_TOP_PAD, 256 << 20);
-    skeleton_ = dart::dynamics::Skeleton::create("chain");
-    skeleton_->setGravity(Eigen::Vector3d(0.0, 0.0, spec.gravity));
-    BodyNode* parent = nullptr;
-    for (int k = 0; k < spec.n; ++k) {
-      BallJoint::Properties joint;
-      joint.mName = "ball" + std::to_string(k);
-      joint.mT_ParentBodyToJoint = Eigen::Isometry3d::Identity();
-      if (k > 0) joint.mT_ParentBodyToJoint.translation() = Eigen::Vector3d(0.0, 0.0, spec.length[k - 1]);
-      const double it = spec.bodyInertiaTransverse(k);
-      const Inertia inertia(spec.bodyMass(k), Eigen::Vector3d(0.0, 0.0, spec.bodyCom(k)),
-                            Eigen::Vector3d(it, it, spec.bodyInertiaPolar(k)).asDiagonal().toDenseMatrix());
-      BodyNode::Properties body(BodyNode::AspectProperties("link" + std::to_string(k), inertia));
-      parent = skeleton_->createJointAndBodyNodePair<BallJoint>(parent, joint, body).second;
-    }
-    last_ = parent;
-    mallopt(M_MMAP_THRESHOLD, 128 << 10);  // glibc's defaults
-    mallopt(M_TRIM_THRESHOLD, 128 << 10);
-    mallopt(M_TOP_PAD, 128 << 10);
-    malloc_trim(0);
+    DartChain chain = buildDartChain(spec);
+    skeleton_ = chain.skeleton;
+    last_ = chain.last;
     const int dof = static_cast<int>(skeleton_->getNumDofs());
-    q0_.resize(dof);
-    for (int k = 0; k < spec.n; ++k) q0_.segment<3>(3 * k) = BallJoint::convertToPositions(spec.relativeRotation(k));
+    q0_ = initialPositions(spec);
     for (Eigen::VectorXd* v : {&q_, &v_, &qs_, &vs_, &a1_, &a2_, &a3_, &a4_, &vmean_}) v->setZero(dof);
     reset();
   }
