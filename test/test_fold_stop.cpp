@@ -112,7 +112,9 @@ TEST(FoldStop, ALimpTetherPaidOutOntoTheBottomPilesUpWithoutFoldingThroughItself
       sim.snapshot(s);
       most_bent = std::max(most_bent, largestBend(s));
       deepest = std::max(deepest, s.chain.seabed.max_penetration);
-      if (i == 22000) EXPECT_NEAR(s.deployed_length, 20.0, 0.05);  // paid out 8 m
+      if (i == 22000) {
+        EXPECT_NEAR(s.deployed_length, 20.0, 0.05);  // paid out 8 m
+      }
     }
     std::cout << "[ limp tether onto the bottom, GJ " << torsion << " N m^2 ] most bent joint " << most_bent
               << " rad (pi - " << M_PI - most_bent << "), deepest in the bed " << deepest << " m, links added "

@@ -89,10 +89,11 @@ namespace {
 /// The K points of one link on a flat bed (normal +z everywhere): the same law (forces/contact.h), with what
 /// the points share found once, the axis's direction along the bed, and no probe. Adds the force and its
 /// first moment, returns the dissipated power [W]. The hot path's case.
-CABLE_HOT_PATH EIGEN_ALWAYS_INLINE double flatLinkContact(const SeabedContactConstants& c, const ContactLaw& law, double l,
-                                                          const Vec3& base, const Vec3& velocity, const Vec3& axis,
-                                                          const Vec3& rate, const double* anchors, Vec3& force,
-                                                          Vec3& moment) {
+/// (Its own clones, called from its caller's: GCC cannot inline a target_clones function, and ignored the
+/// always_inline this once had.)
+CABLE_HOT_PATH double flatLinkContact(const SeabedContactConstants& c, const ContactLaw& law, double l, const Vec3& base,
+                                      const Vec3& velocity, const Vec3& axis, const Vec3& rate, const double* anchors,
+                                      Vec3& force, Vec3& moment) {
   const double depth = c.bed.shallowest();
   ContactPlace place;
   place.has_along = alongTheBed(axis, place.normal, place.along);
