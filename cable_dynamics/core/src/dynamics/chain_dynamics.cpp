@@ -85,7 +85,7 @@ bool ChainDynamics::holdNewJoint(int joint, const Eigen::VectorXd& x, const EndI
     out << e1.dot(a), e2.dot(a);
     return true;
   };
-  Eigen::Vector2d free, unit;
+  Eigen::Vector2d free = Eigen::Vector2d::Zero(), unit = Eigen::Vector2d::Zero();  // read even when a probe fails
   Eigen::Matrix2d response;
   bool ok = relative(Eigen::Vector3d::Zero(), free) && relative(e1, unit);
   response.col(0) = unit - free;
