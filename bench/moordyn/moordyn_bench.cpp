@@ -451,13 +451,13 @@ int main(int argc, char** argv) {
     const std::string yaml = dir + "/" + line.file + ".yaml", txt = dir + "/" + line.file + ".txt";
     char amplitude[64];
     std::snprintf(amplitude, sizeof amplitude, "base.motion.amplitude=[0, 0, %.17g]", line.heave);
-    std::vector<std::string> heave_override;
-    if (!std::isnan(line.heave)) heave_override.push_back(amplitude);
+    std::vector<std::string> project_overrides;  // the project's sides': the line's heave, then MDB_PROJECT_SET
+    if (!std::isnan(line.heave)) project_overrides.push_back(amplitude);
     // MDB_PROJECT_SET: more overrides for the project's sides only (as cable_sim's --set, separated by
     // spaces), e.g. "cable.links=152": the project at another discretization than MoorDyn's.
     if (const char* extra = std::getenv("MDB_PROJECT_SET")) {
       std::istringstream words(extra);
-      for (std::string word; words >> word;) heave_override.push_back(word);
+      for (std::string word; words >> word;) project_overrides.push_back(word);
     }
     // The references.
     double ref_inext, ref_elastic, ref_end = 0.0;
@@ -473,14 +473,14 @@ int main(int argc, char** argv) {
       orcaflex = readSeries(source + "/tests/Mooring/" + line.series, line.series_start);
     Heave heave;
     {
-      const CableParams p = cable_dynamics::loadConfigFile(yaml, heave_override);
+      const CableParams p = cable_dynamics::loadConfigFile(yaml, project_overrides);
       heave.amplitude = p.base.motion.amplitude;
       heave.period = p.base.motion.period;
     }
     // The sides, run one after the other in each repetition.
     // The rigid RK4 side: the same config with EA and c_a 0 (the lines without EA skip it).
-    const bool elastic = cable_dynamics::loadConfigFile(yaml, heave_override).axial_stiffness > 0.0;
-    std::vector<std::string> rigid_override = heave_override;
+    const bool elastic = cable_dynamics::loadConfigFile(yaml, project_overrides).axial_stiffness > 0.0;
+    std::vector<std::string> rigid_override = project_overrides;
     rigid_override.insert(rigid_override.end(), {"cable.axial_stiffness=0", "cable.axial_damping=0"});
     // The sides, in the table's order; kImplicitLarge: the implicit integrator at the largest step that keeps
     // the tension within 1 % of the RK4 run's range (largestAccurateStep), chosen in the first repetition.
@@ -533,18 +533,18 @@ int main(int argc, char** argv) {
         Run run;
         try {
           if (side == kRk4 || side == kImplicit)
-            run = runProject(projectParams(yaml, heave_override, side == kRk4, &rk4_dt), line.duration,
+            run = runProject(projectParams(yaml, project_overrides, side == kRk4, &rk4_dt), line.duration,
                              line.payout && side == kRk4 && rep == 0 ? &deploy : nullptr);
           else if (side == kImplicitLarge) {
             if (rep == 0)  // against this repetition's RK4 run, which ran just before
-              large_dt = largestAccurateStep(yaml, heave_override, line.duration, dynamic_from, first[kRk4], large_note,
+              large_dt = largestAccurateStep(yaml, project_overrides, line.duration, dynamic_from, first[kRk4], large_note,
                                              orcaflex, 1e3 * line.published_static, &ladder);
             double unused = 0.0;
-            run = runProject(projectParams(yaml, heave_override, false, &unused, large_dt), line.duration, nullptr);
+            run = runProject(projectParams(yaml, project_overrides, false, &unused, large_dt), line.duration, nullptr);
             if (rep == 0) run.note = large_note + (run.note.empty() ? "" : "; " + run.note);
           } else if (side == kImplicitMatched) {
             double unused = 0.0;
-            run = runProject(projectParams(yaml, heave_override, false, &unused, matched_dt), line.duration, nullptr);
+            run = runProject(projectParams(yaml, project_overrides, false, &unused, matched_dt), line.duration, nullptr);
             if (rep == 0) run.note = matched_note + (run.note.empty() ? "" : "; " + run.note);
           } else if (side == kRk4Rigid)
             run = runProject(projectParams(yaml, rigid_override, true, &rk4_rigid_dt), line.duration, nullptr);
