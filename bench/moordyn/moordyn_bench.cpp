@@ -128,7 +128,8 @@ double submergedWeight(double mass_per_length, double diameter, double g = 9.806
 struct Heave {
   Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  // m, world axes (z up)
   double period = 10.0;                                 // s
-  Eigen::Vector3d at(double t) const { return amplitude * std::sin(2 * kPi * t / period); }
+  double phase = 0.0;                                   // rad (the project's base.motion.phase)
+  Eigen::Vector3d at(double t) const { return amplitude * std::sin(2 * kPi * t / period + phase); }
 };
 
 /// One side's run: the fairlead tension [N] every kSample s from t = 0 (static) and the wall time of
@@ -166,11 +167,27 @@ Run runMoorDyn(const std::string& file, const Heave& heave, double duration, con
   MoorDynLine line = MoorDyn_GetLine(md, 1);
   // Initialized at rest, as MoorDyn's own test does: with the fairlead's velocity its internal damping
   // would put the velocity jump into the first tension read.
-  double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0}, f[3];
+  // With a phase (MDB_REFERENCE_MOTION) the motion starts off zero: the run starts from its equilibrium
+  // there, and the static tension (the first sample) is the one at zero heave, from an instance of its own.
+  const Eigen::Vector3d start = heave.at(0.0);
+  double x[3] = {start.x(), start.y(), start.z()}, xd[3] = {0, 0, 0}, f[3];
   int status;
+  double still_force[3] = {0, 0, 0};
+  bool still_known = false;
   {
     MuteStdout mute(!kVerbose);
     status = MoorDyn_Init(md, x, xd);  // its initial condition solve (dynamic relaxation): not timed
+    if (status == MOORDYN_SUCCESS && !start.isZero()) {
+      MoorDyn still = MoorDyn_Create(file.c_str());
+      double zero[3] = {0, 0, 0}, rest[3] = {0, 0, 0};
+      if (still && !kVerbose) MoorDyn_SetVerbosity(still, MOORDYN_NO_OUTPUT);
+      if (still && MoorDyn_Init(still, zero, rest) == MOORDYN_SUCCESS) {
+        MoorDyn_GetPointForce(MoorDyn_GetPoint(still, 2), still_force);
+        still_known = true;
+      }
+      if (still) MoorDyn_Close(still);
+      if (!still_known) status = MOORDYN_UNHANDLED_ERROR;
+    }
   }
   if (status != MOORDYN_SUCCESS) return MoorDyn_Close(md), run.ok = false, run.note = "MoorDyn_Init failed", run;
   MoorDyn_GetDt(md, &run.dt);
@@ -192,7 +209,7 @@ Run runMoorDyn(const std::string& file, const Heave& heave, double duration, con
   auto norm = [](const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
   run.t.push_back(0.0);
   MoorDyn_GetPointForce(vessel, f);  // at rest: the line's static pull [N]
-  run.tension.push_back(norm(f));
+  run.tension.push_back(norm(still_known ? still_force : f));
   // Driven as a coupled code drives it: each call gets the fairlead's position now and the secant
   // velocity to the call's end, so that its path is the sine's chord, continuous (a tangent velocity
   // would jump the position back a few mm every call). Per step, the chord is the step's; per 0.1 s
@@ -357,6 +374,7 @@ double largestAccurateStep(const std::string& yaml, const std::vector<std::strin
                            double from, const Run& reference, std::string& note,
                            const std::vector<std::pair<double, double>>& series = {}, double static_reference = 0.0,
                            LadderDeviations* ladder = nullptr) {
+  double chosen = 0.0;  // s: the largest rung within kStepTolerance
   for (const double dt : kImplicitLadder) {
     double unused = 0.0;
     Run run;
@@ -372,7 +390,7 @@ double largestAccurateStep(const std::string& yaml, const std::vector<std::strin
       if (series.empty() || run.tension.empty()) {
         std::snprintf(text, sizeof text, "%s%g ms: %.2g%%", note.empty() ? "vs RK4: " : ", ", 1e3 * dt, 100 * deviation);
       } else {
-        std::snprintf(text, sizeof text, "%s%g ms: %.2g%% (%.1f%%)", note.empty() ? "vs RK4 (vs the reference): " : ", ",
+        std::snprintf(text, sizeof text, "%s%g ms: %.2g%% (%.2f%%)", note.empty() ? "vs RK4 (vs the reference): " : ", ",
                       1e3 * dt, 100 * deviation, 100 * seriesError(run, series, static_reference));
       }
     } else {  // a step failed (diverged): said so, not a deviation
@@ -380,10 +398,12 @@ double largestAccurateStep(const std::string& yaml, const std::vector<std::strin
                     run.t.empty() ? 0.0 : run.t.back());
     }
     note += text;
-    if (ladder != nullptr && !series.empty()) ladder->emplace_back(dt, seriesDeviation(run, reference, series, static_reference));
-    if (deviation <= kStepTolerance) return dt;
+    const bool whole_ladder = ladder != nullptr && !series.empty();  // impl matched reads every rung's deviation
+    if (whole_ladder) ladder->emplace_back(dt, seriesDeviation(run, reference, series, static_reference));
+    if (deviation <= kStepTolerance && chosen == 0.0) chosen = dt;
+    if (chosen > 0.0 && !whole_ladder) break;
   }
-  return 0.01;
+  return chosen > 0.0 ? chosen : 0.01;
 }
 
 /// A reference fairlead tension series of MoorDyn's tests [N] against the run's time [s] (`start` s into
@@ -401,6 +421,33 @@ std::vector<std::pair<double, double>> readSeries(const std::string& path, doubl
     else if (v.size() == 2) series.push_back({v[0] + start, 1e3 * v[1]});
   }
   return series;
+}
+
+/// The lag [s] of a chain reference's own fairlead motion behind the sine the motion file prescribes,
+/// A sin(2 pi t / period): OrcaFlex's files record the fairlead's height (their third column) beside the
+/// tension, and it is A sin(2 pi (t - lag) / period). From the fundamental's phase over the rows that span
+/// whole periods; 0 when the file has no such column (the jumper's) or is not found.
+double referenceLag(const std::string& path, double period) {
+  std::ifstream in(path);
+  std::vector<std::pair<double, double>> rows;  // (t [s], z [m])
+  for (std::string row; std::getline(in, row);) {
+    std::istringstream fields(row);
+    std::vector<double> v;
+    for (double value; fields >> value;) v.push_back(value);
+    if (v.size() >= 4) rows.push_back({v[0], v[2]});
+  }
+  if (rows.size() < 3) return 0.0;
+  const double span = rows.back().first - rows.front().first;
+  const double whole = period * std::floor(span / period + 1e-9);  // s: the whole periods the rows span
+  if (whole <= 0.0) return 0.0;
+  double s = 0.0, c = 0.0;  // z's projections on sin and cos of the fundamental
+  const double w = 2 * kPi / period;
+  for (const auto& [t, z] : rows) {
+    if (t - rows.front().first >= whole - 1e-9) break;  // [t0, t0 + whole): the last row would count twice
+    s += z * std::sin(w * t);
+    c += z * std::cos(w * t);
+  }
+  return -std::atan2(c, s) / w;  // z = A sin(w t - w lag): s ~ cos(w lag), c ~ -sin(w lag)
 }
 
 double median(std::vector<double> v) {
@@ -446,6 +493,7 @@ int main(int argc, char** argv) {
               "wall [ms/sim s]", "static [kN]", "static error [%]", "dyn. max/min [kN] (a)",
               "dynamic error [%]", "note");
   const char* only = std::getenv("MDB_ONLY");  // one line of the table, by name (debugging)
+  const bool reference_motion = std::getenv("MDB_REFERENCE_MOTION") != nullptr;
   for (const Line& line : lines) {
     if (only && line.name != only) continue;
     const std::string yaml = dir + "/" + line.file + ".yaml", txt = dir + "/" + line.file + ".txt";
@@ -471,11 +519,24 @@ int main(int argc, char** argv) {
     std::vector<std::pair<double, double>> orcaflex;  // the reference series (OrcaFlex's for the chains)
     if (!line.series.empty() && !source.empty())
       orcaflex = readSeries(source + "/tests/Mooring/" + line.series, line.series_start);
+    // MDB_REFERENCE_MOTION=1: both sides' fairleads move as the reference's own did (its recorded height lags
+    // the motion file's sine by `lag`: 0.0286 s on every chain file), not as MoorDyn's test drives them
+    // (the motion file's sine, against the reference at the same times). The series' t = 0 is the run's
+    // series_start, where the sine is at its zero: the run's sine is shifted by the lag.
+    double lag = 0.0;  // s
+    if (reference_motion && !orcaflex.empty() && !std::isnan(line.heave)) {
+      const CableParams p = cable_dynamics::loadConfigFile(yaml, project_overrides);
+      lag = referenceLag(source + "/tests/Mooring/" + line.series, p.base.motion.period);
+      char phase[64];
+      std::snprintf(phase, sizeof phase, "base.motion.phase=%.17g", -2 * kPi * lag / p.base.motion.period);
+      project_overrides.push_back(phase);
+    }
     Heave heave;
     {
       const CableParams p = cable_dynamics::loadConfigFile(yaml, project_overrides);
       heave.amplitude = p.base.motion.amplitude;
       heave.period = p.base.motion.period;
+      heave.phase = p.base.motion.phase;
     }
     // The sides, run one after the other in each repetition.
     // The rigid RK4 side: the same config with EA and c_a 0 (the lines without EA skip it).
@@ -521,7 +582,7 @@ int main(int argc, char** argv) {
               if (rk4_error + deviation <= moordyn_error) {
                 matched_dt = dt;
                 char text[160];
-                std::snprintf(text, sizeof text, "error bound: RK4's %.1f%% + %.1f%% from RK4 = %.1f%% <= MoorDyn's %.1f%%",
+                std::snprintf(text, sizeof text, "error bound: RK4's %.2f%% + %.2f%% from RK4 = %.2f%% <= MoorDyn's %.2f%%",
                               100 * rk4_error, 100 * deviation, 100 * (rk4_error + deviation), 100 * moordyn_error);
                 matched_note = text;
                 break;
@@ -574,6 +635,7 @@ int main(int argc, char** argv) {
       for (const auto& s : orcaflex) o_max = std::max(o_max, s.second), o_min = std::min(o_min, s.second);
       std::printf("; %s dynamic %.1f / %.1f kN over t = %g-%g s", line.series_name.c_str(), o_max / 1e3, o_min / 1e3,
                   orcaflex.front().first, orcaflex.back().first);
+      if (reference_motion) std::printf("; both fairleads %.4f s behind the motion file's sine, as the reference's", lag);
     }
     std::printf("\n");
     for (int side = 0; side < kSides; ++side) {
@@ -609,7 +671,7 @@ int main(int argc, char** argv) {
         if (r.t[i] >= from - 1e-6) d_max = std::max(d_max, r.tension[i]), d_min = std::min(d_min, r.tension[i]);
       std::snprintf(dyn, sizeof dyn, "%.4g / %.4g", d_max / 1e3, d_min / 1e3);
       if (!orcaflex.empty()) {
-        std::snprintf(err, sizeof err, "%.1f (vs %s)", 100 * seriesError(r, orcaflex, 1e3 * line.published_static),
+        std::snprintf(err, sizeof err, "%.2f (vs %s)", 100 * seriesError(r, orcaflex, 1e3 * line.published_static),
                       line.series_name.c_str());
       } else if (line.payout) {
         // the last 5 s (the winch stopped at 65 s): their mean, an elastic line still bounces axially
