@@ -406,44 +406,45 @@ double largestAccurateStep(const std::string& yaml, const std::vector<std::strin
   return chosen > 0.0 ? chosen : 0.01;
 }
 
-/// A reference fairlead tension series of MoorDyn's tests [N] against the run's time [s] (`start` s into
-/// the run at its t = 0): the chains' OrcaFlex files (tab-separated: t, x, z, fairlead tension [kN], ...;
-/// their motion file starts at t = -10 s), the jumper's (t, top tension [kN]); empty when not found.
-std::vector<std::pair<double, double>> readSeries(const std::string& path, double start) {
-  std::vector<std::pair<double, double>> series;
+/// A reference series of MoorDyn's tests: the fairlead tension [N] against the run's time [s] (`start` s
+/// into the run at the file's t = 0), and where the file records it (the chains' OrcaFlex files:
+/// tab-separated t, x, z, fairlead tension [kN], ...; their motion file starts at t = -10 s) the fairlead's
+/// height [m] against the file's own t; the jumper's has t and top tension [kN] only. Empty when not found.
+struct ReferenceSeries {
+  std::vector<std::pair<double, double>> tension;  // (run's t [s], T [N])
+  std::vector<std::pair<double, double>> height;   // (file's t [s], z [m])
+};
+
+ReferenceSeries readSeries(const std::string& path, double start) {
+  ReferenceSeries series;
   std::ifstream in(path);
   for (std::string row; std::getline(in, row);) {
     std::replace(row.begin(), row.end(), ',', ' ');
     std::istringstream fields(row);
     std::vector<double> v;
     for (double value; fields >> value;) v.push_back(value);
-    if (v.size() >= 4) series.push_back({v[0] + start, 1e3 * v[3]});
-    else if (v.size() == 2) series.push_back({v[0] + start, 1e3 * v[1]});
+    if (v.size() >= 4) {
+      series.tension.push_back({v[0] + start, 1e3 * v[3]});
+      series.height.push_back({v[0], v[2]});
+    } else if (v.size() == 2) {
+      series.tension.push_back({v[0] + start, 1e3 * v[1]});
+    }
   }
   return series;
 }
 
-/// The lag [s] of a chain reference's own fairlead motion behind the sine the motion file prescribes,
-/// A sin(2 pi t / period): OrcaFlex's files record the fairlead's height (their third column) beside the
-/// tension, and it is A sin(2 pi (t - lag) / period). From the fundamental's phase over the rows that span
-/// whole periods; 0 when the file has no such column (the jumper's) or is not found.
-double referenceLag(const std::string& path, double period) {
-  std::ifstream in(path);
-  std::vector<std::pair<double, double>> rows;  // (t [s], z [m])
-  for (std::string row; std::getline(in, row);) {
-    std::istringstream fields(row);
-    std::vector<double> v;
-    for (double value; fields >> value;) v.push_back(value);
-    if (v.size() >= 4) rows.push_back({v[0], v[2]});
-  }
-  if (rows.size() < 3) return 0.0;
-  const double span = rows.back().first - rows.front().first;
+/// The lag [s] of a reference's own fairlead motion, `height` (readSeries), behind the sine the motion
+/// file prescribes, A sin(2 pi t / period): OrcaFlex's chain files record a height A sin(2 pi (t - lag) /
+/// period). From the fundamental's phase over the rows that span whole periods; 0 without such rows.
+double referenceLag(const std::vector<std::pair<double, double>>& height, double period) {
+  if (height.size() < 3) return 0.0;
+  const double span = height.back().first - height.front().first;
   const double whole = period * std::floor(span / period + 1e-9);  // s: the whole periods the rows span
   if (whole <= 0.0) return 0.0;
   double s = 0.0, c = 0.0;  // z's projections on sin and cos of the fundamental
   const double w = 2 * kPi / period;
-  for (const auto& [t, z] : rows) {
-    if (t - rows.front().first >= whole - 1e-9) break;  // [t0, t0 + whole): the last row would count twice
+  for (const auto& [t, z] : height) {
+    if (t - height.front().first >= whole - 1e-9) break;  // [t0, t0 + whole): the last row would count twice
     s += z * std::sin(w * t);
     c += z * std::cos(w * t);
   }
@@ -516,31 +517,30 @@ int main(int argc, char** argv) {
       ref_inext = catenaryFairleadTension(line.L, line.w, inf, line.x, line.z, line.grounded);
       ref_elastic = catenaryFairleadTension(line.L, line.w, line.EA, line.x, line.z, line.grounded);
     }
-    std::vector<std::pair<double, double>> orcaflex;  // the reference series (OrcaFlex's for the chains)
+    ReferenceSeries reference;  // the reference series (OrcaFlex's for the chains)
     if (!line.series.empty() && !source.empty())
-      orcaflex = readSeries(source + "/tests/Mooring/" + line.series, line.series_start);
+      reference = readSeries(source + "/tests/Mooring/" + line.series, line.series_start);
+    const std::vector<std::pair<double, double>>& orcaflex = reference.tension;
     // MDB_REFERENCE_MOTION=1: both sides' fairleads move as the reference's own did (its recorded height lags
     // the motion file's sine by `lag`: 0.0286 s on every chain file), not as MoorDyn's test drives them
     // (the motion file's sine, against the reference at the same times). The series' t = 0 is the run's
     // series_start, where the sine is at its zero: the run's sine is shifted by the lag.
-    double lag = 0.0;  // s
-    if (reference_motion && !orcaflex.empty() && !std::isnan(line.heave)) {
-      const CableParams p = cable_dynamics::loadConfigFile(yaml, project_overrides);
-      lag = referenceLag(source + "/tests/Mooring/" + line.series, p.base.motion.period);
-      char phase[64];
-      std::snprintf(phase, sizeof phase, "base.motion.phase=%.17g", -2 * kPi * lag / p.base.motion.period);
-      project_overrides.push_back(phase);
-    }
+    const CableParams config = cable_dynamics::loadConfigFile(yaml, project_overrides);
     Heave heave;
-    {
-      const CableParams p = cable_dynamics::loadConfigFile(yaml, project_overrides);
-      heave.amplitude = p.base.motion.amplitude;
-      heave.period = p.base.motion.period;
-      heave.phase = p.base.motion.phase;
+    heave.amplitude = config.base.motion.amplitude;
+    heave.period = config.base.motion.period;
+    heave.phase = config.base.motion.phase;
+    double lag = 0.0;  // s
+    if (reference_motion && !reference.height.empty() && !std::isnan(line.heave)) {
+      lag = referenceLag(reference.height, heave.period);
+      heave.phase = -2 * kPi * lag / heave.period;
+      char phase[64];
+      std::snprintf(phase, sizeof phase, "base.motion.phase=%.17g", heave.phase);
+      project_overrides.push_back(phase);  // the same motion on the project's side
     }
     // The sides, run one after the other in each repetition.
     // The rigid RK4 side: the same config with EA and c_a 0 (the lines without EA skip it).
-    const bool elastic = cable_dynamics::loadConfigFile(yaml, project_overrides).axial_stiffness > 0.0;
+    const bool elastic = config.axial_stiffness > 0.0;
     std::vector<std::string> rigid_override = project_overrides;
     rigid_override.insert(rigid_override.end(), {"cable.axial_stiffness=0", "cable.axial_damping=0"});
     // The sides, in the table's order; kImplicitLarge: the implicit integrator at the largest step that keeps
