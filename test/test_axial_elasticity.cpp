@@ -79,7 +79,7 @@ double simulatedLongitudinalFrequency(int n, double beta, int periods) {
   Eigen::VectorXd x = sim.state();
   const double l = kRodLength / n, amplitude = 1e-6;  // stretch per link [m]: the static one is 1e-4 .. 2e-4
   for (int k = 0; k < n; ++k) {
-    const double at = (k + 1) * l;  // the stretch sits at link k's far end
+    const double at = (k + 0.5) * l;  // link k's spring spans it: the continuum's strain at its middle
     x(StateLayout::stretch(n, false, k)) += amplitude * std::cos(beta * at / kRodLength);
   }
   sim.setState(x);
@@ -124,20 +124,27 @@ TEST(AxialElasticity, HangingRodRingsAtItsLongitudinalFrequencies) {
                 << exact << ", error " << std::setprecision(3) << errors.back() << "\n";
     }
     std::cout << "  order in n: " << order(errors[0], errors[1]) << ", " << order(errors[1], errors[2]) << "\n";
-    // Measured (mode 1 / mode 2): +0.365 / +0.189 % at n = 50, +0.183 / +0.108 % at 100, about half that at
-    // 200: first order in 1/n (mode 1's observed order 1.00). The reason: a link's mass rides with its base
-    // end, so the last stretch has half a link's mass less beyond it than the continuum's lumping (the
-    // frequencies come out high). Bound: the issue's 0.5 % at n = 200 (5x the measured 0.09 %), and mode 1's
-    // order within [0.8, 1.2].
-    EXPECT_LT(std::abs(errors[2]), 5e-3) << "mode " << mode;
-    EXPECT_LT(std::abs(errors[2]), std::abs(errors[1])) << "mode " << mode << ": no convergence in n";
-    if (mode == 1) {
-      EXPECT_NEAR(order(errors[1], errors[2]), 1.0, 0.2);
-    }
+    // Measured (mode 1 / mode 2): -2.13e-5 / -2.22e-4 at n = 50, -5.33e-6 / -5.55e-5 at 100, -1.33e-6 /
+    // -1.39e-5 at 200: second order in 1/n (observed orders 2.00 and 2.00 for both modes). Half of each
+    // link's mass rides beyond its stretch, so every node between two springs carries half of each
+    // neighbouring link, as a centred lumping does (docs/MODEL.md section 12); the frequencies come out
+    // low by the lumping's (omega l / c)^2 / 24. With every link's mass at its base end (until session 28)
+    // they came out high at first order: +0.365 / +0.189 % at n = 50. Bounds: 5x each mode's measured
+    // error at n = 50 and 200 (mode 1: 1e-4 and 7e-6; mode 2: 1.1e-3 and 7e-5), and the order within
+    // [1.8, 2.2] (1.0 would be the old lumping).
+    const double at_50 = mode == 1 ? 1e-4 : 1.1e-3, at_200 = mode == 1 ? 7e-6 : 7e-5;
+    EXPECT_LT(std::abs(errors[0]), at_50) << "mode " << mode;
+    EXPECT_LT(std::abs(errors[2]), at_200) << "mode " << mode;
+    EXPECT_NEAR(order(errors[0], errors[1]), 2.0, 0.2) << "mode " << mode;
+    EXPECT_NEAR(order(errors[1], errors[2]), 2.0, 0.2) << "mode " << mode;
   }
 }
 
 namespace {
+
+/// How slack the snap case's line starts [m]: its first link's stretch, within the slack stop (-l/3) of
+/// the ten-link lines' 1 m links.
+constexpr double kSnapSlack = 0.3;
 
 /// The snap case below: n links of a 10 m line of `mass_per_length` [kg/m] holding 100 kg, at `integrator`
 /// and `dt` [s].
@@ -157,11 +164,11 @@ double snapPeak(int n, const std::string& integrator, double dt, long& snaps, do
                 double mass_per_length = 1.0e-4, long* retried = nullptr) {
   CableSimulator sim(snapLine(n, integrator, dt, mass_per_length));
   Eigen::VectorXd x = sim.state();
-  x(StateLayout::stretch(n, false, 0)) = -0.5;
+  x(StateLayout::stretch(n, false, 0)) = -kSnapSlack;
   sim.setState(x);
   SimulationSnapshot s;
   double peak = 0.0;
-  for (int i = 0, steps = static_cast<int>(std::lround(0.8 / dt)); i < steps; ++i) {
+  for (int i = 0, steps = static_cast<int>(std::lround(0.7 / dt)); i < steps; ++i) {
     EXPECT_TRUE(sim.step().ok);
     sim.snapshot(s);
     peak = std::max(peak, s.chain.tension(0));
@@ -176,12 +183,12 @@ double snapPeak(int n, const std::string& integrator, double dt, long& snaps, do
 
 TEST(AxialElasticity, ASnapOntoASlackLinePeaksAtTheEnergyBound) {
   // A 100 kg mass hangs in air on a 10 m line (EA 1e5 N: k = EA / L = 1e4 N/m) of 1 g, 1e-5 of the mass:
-  // the line is slack by h = 0.5 m (its first link's stretch at -h), so the mass falls h and snaps it
-  // taut. With a massless line the peak tension is W (1 + sqrt(1 + 2 k h / W)) = 4263 N (energy: W (h +
+  // the line is slack by h = 0.3 m (its first link's stretch at -h), so the mass falls h and snaps it
+  // taut. With a massless line the peak tension is W (1 + sqrt(1 + 2 k h / W)) = 3598 N (energy: W (h +
   // d) = k d^2 / 2). RK4 at 0.02 ms, the implicit step at 10 ms (far beyond what it recommends for the
   // ten-link lines: 85 us at 1e-4 kg/m, 0.85 ms at 0.01 kg/m) and at its recommended step, the tension at
   // the base sampled every step.
-  const double h = 0.5, k = 1.0e5 / 10.0, weight = 100.0 * 9.81;
+  const double h = kSnapSlack, k = 1.0e5 / 10.0, weight = 100.0 * 9.81;
   const double exact = weight * (1.0 + std::sqrt(1.0 + 2.0 * k * h / weight));
   long snaps = 0;
   double largest = 0.0;
@@ -189,24 +196,25 @@ TEST(AxialElasticity, ASnapOntoASlackLinePeaksAtTheEnergyBound) {
   std::cout << "snap, RK4: peak " << rk4 << " N, closed form " << exact << " N, error " << rk4 / exact - 1.0 << "\n";
   // What the closed form leaves out is the line's own mass: the snap sends a wave down it whose stress is
   // v sqrt(EA m') (v = sqrt(2 g h) = 3.13 m/s: 31 N here, 0.7 %), and it rings on the links' own axial mode.
-  // With 0.01 kg/m (wave stress 99 N) the peak was 1.79 % above. Measured: +0.197 %. Bound: the issue's 2 % (10x).
+  // With 0.01 kg/m (wave stress 99 N) the peak was 1.79 % above. Measured: +0.123 %. Bound: the issue's 2 % (16x).
   EXPECT_NEAR(rk4 / exact, 1.0, 2e-2);
-  // The first link went from slack to taut once (the mass rebounds into free flight at 0.63 s and is
-  // still rising at 0.8 s); the others started at s = 0, not slack. The simulator's own largest tension
+  // The first link went from slack to taut once (the mass rebounds into free flight at 0.64 s and is
+  // still rising at 0.7 s, the end of the run; at 0.79 s the light line's rattle snaps it taut again); the
+  // others started at s = 0, not slack. The simulator's own largest tension
   // (at the steps' ends, of the stretches' law) is the peak at the far end of the first link.
   EXPECT_EQ(snaps, 1);
   EXPECT_NEAR(largest, rk4, 1e-3 * rk4);
   // The implicit step, on one link: the mass on the line's spring alone.
   const double implicit = snapPeak(1, "implicit", 0.01, snaps, largest);
   std::cout << "snap, implicit at 10 ms, one link: peak " << implicit << " N, error " << implicit / exact - 1.0 << "\n";
-  // Measured: -0.060 %. Bound 0.5 % (8x).
+  // Measured: -0.092 %. Bound 0.5 % (5.4x).
   EXPECT_NEAR(implicit / exact, 1.0, 5e-3);
   EXPECT_EQ(snaps, 1);
   // On ten links of a light tether (0.01 kg/m: its links' own axial modes at h omega = 30 at 10 ms) the
   // linearly implicit step puts energy in where a link's stiff spring switches on within the step; the
   // step's energy check (2e-3 of the scale in one step, docs/MODEL.md section 6) retries that step in
-  // pieces, and the run goes on (before that check it diverged after the snap). Measured: +0.19 % of the
-  // closed form (+0.04 % in session 23's code), one step retried; RK4 at 0.02 ms gives +1.85 %, the line's wave stress v sqrt(EA m') that
+  // pieces, and the run goes on (before that check it diverged after the snap). Measured: -0.28 % of the
+  // closed form (+0.19 % with every link's mass at its base end, +0.04 % in session 23's code), one step retried; RK4 at 0.02 ms gives +1.85 %, the line's wave stress v sqrt(EA m') that
   // 10 ms does not resolve (1 ms a link for the wave). With 1e-4 kg/m (h omega = 300) at 10 ms the snap's
   // step is refused even in 64 pieces (the state kept, the failure reported: docs/MODEL.md section 12,
   // "Limits"); at its recommended step it holds (below). Bound: the issue's 2 % (50x; 1.1x of RK4's).
@@ -218,7 +226,7 @@ TEST(AxialElasticity, ASnapOntoASlackLinePeaksAtTheEnergyBound) {
   EXPECT_LE(retried, 3);
   // The issue's "with the implicit step at its recommended dt": the step the implicit integrator recommends
   // for the ten links of 1e-4 kg/m (estimateStableStep, 85 us; the links' axial modes at h omega = 2.7
-  // there, left to the step's damping) follows the snap with no step retried. Measured +0.018 % of the massless closed form: the line's wave stress (0.23 %,
+  // there, left to the step's damping) follows the snap with no step retried. Measured +0.012 % of the massless closed form: the line's wave stress (0.23 %,
   // which RK4 at 0.02 ms resolves, +0.2 % above) is damped out. Bound 0.1 % (5x).
   const CableParams ten = snapLine(10, "implicit", 0.01, 1.0e-4);
   const double recommended = estimateStableStep(ten, deriveLinkProperties(ten)).implicit_recommended;
@@ -292,9 +300,10 @@ TEST(AxialElasticity, EnergyIsConservedWithTheStrainEnergyAndBalancedWithItsDamp
 }
 
 TEST(AxialElasticity, AnAxialDamperDecaysAtItsRate) {
-  // One link (5 m, EA 1e6 N, c_a 5e3 N s) holding a 50 kg mass in air: the link hangs from the base, so
-  // the mass on its stretch is an oscillator with k = EA / l = 2e5 N/m and c = c_a / l = 1e3 N s/m: from a
-  // displaced equilibrium it rings at omega_d = sqrt(k / m - (c / 2m)^2) = 63.05 rad/s, its amplitude
+  // One link (5 m, 5 kg, EA 1e6 N, c_a 5e3 N s) holding a 50 kg mass in air: the link hangs from the base,
+  // so the mass on its stretch (the load and the link's far-end half, 52.5 kg) is an oscillator with
+  // k = EA / l = 2e5 N/m and c = c_a / l = 1e3 N s/m: from a displaced equilibrium it rings at
+  // omega_d = sqrt(k / m - (c / 2m)^2) = 61.5 rad/s, its amplitude
   // decaying as exp(-c t / 2m) (damping ratio 0.16: taut throughout, since the static stretch, 2.5 mm,
   // exceeds the 1 mm it is displaced by).
   CableSimulator sim(loadConfigString(
@@ -305,7 +314,8 @@ TEST(AxialElasticity, AnAxialDamperDecaysAtItsRate) {
   const double rest = x(StateLayout::stretch(1, false, 0));
   x(StateLayout::stretch(1, false, 0)) += 1e-3;
   sim.setState(x);
-  const double k = 2e5, c = 1e3, m = 50.0;
+  // The mass on the stretch: the load and the link's far-end half (docs/MODEL.md section 12).
+  const double k = 2e5, c = 1e3, m = 50.0 + 2.5;
   const double rate = c / (2.0 * m), omega = std::sqrt(k / m - rate * rate);
   // The exact response from (1 mm, at rest): y = A e^(-rate t) (cos(omega t) + rate / omega sin(omega t)).
   double worst = 0.0;
@@ -398,22 +408,21 @@ GroundedErrors groundedStatics(const std::vector<double>& links, double span) {
 // massless anchored tip locks it: MODEL.md section 12). Against the closed form above: the fairlead's
 // tension and the anchor's horizontal pull H (the anchor also holds the share of the last link's weight
 // that the bed under a continuous line would carry).
-// Equal links, measured at n = 25, 50, 100, 200: fairlead -0.28 %, +0.16 %, +0.041 %, +0.027 %; anchor
-// -0.55 %, +0.30 %, +0.073 %, +0.050 %. Two parts: a first-order one, each link's stretch carrying its
-// far end's tension (its own weight rides with its base end: the line short by w l h / (2 EA), 5.9 mm at
-// n = 50, which moves H by +0.16 %), and the touchdown's, which follows where the touchdown falls within
-// a link (grounded 72.0, 71.5, 71.0, 71.375 m against 71.31 m): a rigid link cannot follow the catenary off
-// the bed, the line beyond sits as if the touchdown were up to half a link off, at heights off by up to
-// the curvature there (w / H = 0.093 1/m) times l^2 / 8, and H moves 0.018 % per mm of the fairlead's
-// height. The issue's 0.1 % at n = 50 is NOT met with equal links (0.16 % and 0.30 %), nor by MoorDyn 2.7.1's
-// lumped masses on the same line (bench/moordyn/moordyn_grounded.cpp, its statics converged to 1e-8 of a
-// node's weight): +0.071 % and +0.12 % at this span, but +0.36 % and +0.75 % at 89 m (here +0.42 % and
-// +0.88 %), -0.46 % and -0.91 % at n = 25: the touchdown's quantization bounds both. With the 50 links
-// placed as a mooring analyst places them (24 of 1 m down the catenary, 16 of 0.5 m across the touchdown,
-// 10 of 6.8 m on the bed), over five spans (89 to 91 m, the touchdown moving 4 m within the fine links):
-// within 3.5e-4 (fairlead) and 7.5e-4 (anchor), within 0.1 % but not by the 3x margin the bounds here
-// keep. Bounds: 3x the measured errors at n = 100 and 200 and on the graded line, and a fall of at least
-// 3x from n = 50 to 200 (measured 6x).
+// Equal links, measured at n = 25, 50, 100, 200: fairlead -0.46 %, +0.071 %, +0.0032 %, +0.0064 %; anchor
+// -0.90 %, +0.124 %, +0.0019 %, +0.0032 %. With half of each link's weight beyond its stretch (docs/MODEL.md
+// section 12) what is left is the touchdown's error, which follows where the touchdown falls within a link
+// (grounded 72.0, 71.5, 71.0, 71.375 m against 71.31 m): a rigid link cannot follow the catenary off the
+// bed, the line beyond sits as if the touchdown were up to half a link off, at heights off by up to the
+// curvature there (w / H = 0.093 1/m) times l^2 / 8, and H moves 0.018 % per mm of the fairlead's height.
+// (With every link's weight riding at its base end, until session 28, a first-order part came on top: the
+// line short by w l h / (2 EA), 5.9 mm at n = 50, +0.16 % and +0.30 % there.) MoorDyn 2.7.1's lumped
+// masses on the same line (bench/moordyn/moordyn_grounded.cpp, its statics converged to 1e-8 of a node's
+// weight) have the same touchdown error: +0.071 % and +0.12 % at this span and n = 50, -0.46 % and -0.91 %
+// at n = 25. The issue's 0.1 % at n = 50 is met at the fairlead, not at the anchor (0.124 %), by either.
+// With the 50 links placed as a mooring analyst places them (24 of 1 m down the catenary, 16 of 0.5 m across
+// the touchdown, 10 of 6.8 m on the bed), over five spans (89 to 91 m, the touchdown moving 4 m within the
+// fine links): within 2.9e-4 (fairlead) and 5.4e-4 (anchor). Bounds: 3x the measured errors at n = 100 and
+// 200 and about 4x on the graded line, and a fall of at least 3x from n = 50 to 200 (measured 11x and 39x).
 TEST(AxialElasticity, TheStaticsIsTheElasticCatenaryWithAGroundedPart) {
   std::vector<double> top, bottom;
   for (int n : {25, 50, 100, 200}) {
@@ -423,10 +432,10 @@ TEST(AxialElasticity, TheStaticsIsTheElasticCatenaryWithAGroundedPart) {
     std::cout << n << " equal links: fairlead " << e.fairlead << ", anchor " << e.anchor << ", suspended " << e.suspended
               << " m (V / w " << e.closed_suspended << ")\n";
   }
-  EXPECT_LT(std::abs(top[2]), 1.3e-3);
-  EXPECT_LT(std::abs(top[3]), 8e-4);
-  EXPECT_LT(std::abs(bottom[2]), 2.2e-3);
-  EXPECT_LT(std::abs(bottom[3]), 1.5e-3);
+  EXPECT_LT(std::abs(top[2]), 1e-4);
+  EXPECT_LT(std::abs(top[3]), 2e-4);
+  EXPECT_LT(std::abs(bottom[2]), 6e-5);
+  EXPECT_LT(std::abs(bottom[3]), 1e-4);
   EXPECT_GT(std::abs(top[1] / top[3]), 3.0);
   EXPECT_GT(std::abs(bottom[1] / bottom[3]), 3.0);
   std::vector<double> graded(24, 1.0);
@@ -450,7 +459,7 @@ TEST(AxialElasticity, TheStaticsIsTheElasticCatenaryWithAGroundedPart) {
 // above the closed form's; from there the dynamics telescoped the slack links and the line slid (RK4 at
 // 0.1 ms too). A tension-only cable has no such equilibrium: the start is refused, naming it. Started from
 // its elastic catenary (the default for such a line, catenary_start.h) the same line finds its tension-only
-// equilibrium: fairlead within 1e-3 of the closed form (measured +3.1e-4; 3.2x).
+// equilibrium: fairlead within 1e-3 of the closed form (measured -1.8e-4; 5.4x).
 TEST(AxialElasticity, AnElasticEquilibriumWithACompressedLinkIsRefused) {
   std::vector<double> graded(20, 1.25);
   graded.insert(graded.end(), 20, 0.5);
@@ -502,34 +511,40 @@ TEST(AxialElasticity, TheStaticsIsIrvinesElasticCatenaryBetweenTwoPoints) {
   }
   std::cout << "order in n (top, bottom): " << order(errors_upper[1], errors_upper[2]) << ", "
             << order(errors_lower[1], errors_lower[2]) << "\n";
-  // Measured (top / bottom): -2.0e-4 / -3.7e-4 at n = 25, -7.5e-6 / -6.3e-5 at n = 50, +2.0e-5 / -1.2e-6 at
-  // n = 100; the elastic effect itself is 1.3 % (the inextensible catenary's tensions between the same
-  // points). No clean order: the top's error changes sign between 50 and 100 (a first-order part, the
-  // link's mass riding at its base end, against the second-order one of rigid links). Bound at n = 50:
-  // 3e-4 (5x the larger measured error; the issue asks 0.1 %).
-  EXPECT_LT(std::abs(errors_upper[1]), 3e-4);
-  EXPECT_LT(std::abs(errors_lower[1]), 3e-4);
+  // Measured (top / bottom): -3.79e-4 / -4.81e-4 at n = 25, -9.47e-5 / -1.19e-4 at n = 50, -2.37e-5 /
+  // -2.91e-5 at n = 100: second order (2.00 and 2.03), with half of each link's weight beyond its stretch
+  // (docs/MODEL.md section 12); the elastic effect itself is 1.3 % (the inextensible catenary's tensions
+  // between the same points). With every link's mass at its base end (until session 28) there was no clean
+  // order: -7.5e-6 / -6.3e-5 at n = 50, the top's error changing sign between 50 and 100 (a first-order
+  // part against the second-order one of rigid links). Bounds at n = 50: 6e-4 (5x the larger measured
+  // error; the issue asks 0.1 %), and both orders within [1.8, 2.2].
+  EXPECT_LT(std::abs(errors_upper[1]), 6e-4);
+  EXPECT_LT(std::abs(errors_lower[1]), 6e-4);
+  EXPECT_NEAR(order(errors_upper[1], errors_upper[2]), 2.0, 0.2);
+  EXPECT_NEAR(order(errors_lower[1], errors_lower[2]), 2.0, 0.2);
   // The elasticity is resolved: between the same points (n = 100's) the inextensible catenary's top
   // tension differs from the elastic one by far more than the error.
   EXPECT_GT(std::abs(stiff_upper / upper_last - 1.0), 10.0 * std::abs(errors_upper[2]));
 }
 
-// A slack link's chord may shorten to half its length, no further (forces/axial_spring.h, kSlackStop):
-// beyond, its stretch meets a stop as stiff as its spring. One 1 m link in zero gravity and air, a 1 kg
-// free load at its tip moving in at 1 m/s from s = -0.4 m: it coasts to the stop at -0.5 m (0.1 s), rides
-// the stop's spring k = EA / l = 1e4 N/m for half a period, pi sqrt(m / k) = 31.4 ms, down to
-// -0.5 - v sqrt(m / k) = -0.51 m, and leaves it at 1 m/s; the stop pushes with at most k 0.01 = 100 N.
-// RK4 at 0.1 ms (h omega = 0.01). Measured: the deepest stretch, the rebound speed and the peak push within
-// 2e-6 relative, the time in the stop within 1e-4 s (the step); bounds 1e-5 and 3e-4 s. Before the stop
-// (session 23) a slack link telescoped without limit: config/rov_dive.yaml with EA had its last link at
-// -23 times its length.
-TEST(AxialElasticity, ASlackLinkShortensToHalfItsLengthAndNoFurther) {
+// A slack link's chord may shorten to two thirds of its length, no further (forces/axial_spring.h,
+// kSlackStop): beyond, its stretch meets a stop as stiff as its spring. One 1 m link of 1 kg in zero gravity
+// and air, a 1 kg free load at its tip; what moves along the link is the load and the link's far-end point
+// (half the link's mass, docs/MODEL.md section 12): M = 1.5 kg. Moving in at 1 m/s from 0.1 m short of the
+// stop at s = -l/3, it coasts to it (0.1 s), rides the stop's spring k = EA / l = 1e4 N/m for half a period,
+// pi sqrt(M / k) = 38.5 ms, down to -l/3 - v sqrt(M / k), and leaves it at 1 m/s; the stop pushes with at
+// most k v sqrt(M / k) = 122 N. RK4 at 0.1 ms (h omega = 0.008). Measured: the deepest stretch, the rebound
+// speed and the peak push within 2e-6 relative, the time in the stop within 1e-4 s (the step); bounds 1e-5
+// and 3e-4 s. Before the stop (session 23) a slack link telescoped without limit: config/rov_dive.yaml with
+// EA had its last link at -23 times its length.
+TEST(AxialElasticity, ASlackLinkShortensToTwoThirdsOfItsLengthAndNoFurther) {
   CableSimulator sim(loadConfigString(
       "cable: {links: 1, length: 1.0, diameter: 0.01, mass_per_length: 1.0, axial_stiffness: 1.0e4, "
       "stiffness: {model: bending}}\nload: {mass: 1.0, mode: free}\nfluid: {density: 0.0}\ngravity: 0.0\n"
       "initial: {elevation: 0.0, azimuth: 0.0, torsion: 0.0}\nsimulation: {integrator: rk4, dt: 0.0001}\n"));
+  const double stop = -1.0 / 3.0, moving = 1.5;  // [m], [kg]
   Eigen::VectorXd x = sim.state();
-  x(StateLayout::stretch(1, false, 0)) = -0.4;
+  x(StateLayout::stretch(1, false, 0)) = stop + 0.1;
   x(StateLayout::stretchRate(1, false, 0)) = -1.0;
   sim.setState(x);
   SimulationSnapshot snap;
@@ -540,16 +555,16 @@ TEST(AxialElasticity, ASlackLinkShortensToHalfItsLengthAndNoFurther) {
     const double s = snap.chain.stretch(0);
     deepest = std::min(deepest, s);
     push = std::min(push, snap.chain.far_tension(0));
-    if (entered < 0.0 && s < -0.5) entered = sim.time();
-    if (entered >= 0.0 && left < 0.0 && s > -0.5) {
+    if (entered < 0.0 && s < stop) entered = sim.time();
+    if (entered >= 0.0 && left < 0.0 && s > stop) {
       left = sim.time();
       rebound = sim.state()(StateLayout::stretchRate(1, false, 0));
     }
   }
-  const double omega = std::sqrt(1.0e4 / 1.0);
+  const double omega = std::sqrt(1.0e4 / moving);
   std::cout << std::setprecision(10) << "deepest " << deepest << " m, push " << push << " N, in the stop " << entered << " to " << left
             << " s, rebound " << rebound << " m/s\n";
-  EXPECT_NEAR(deepest / (-0.5 - 1.0 / omega) - 1.0, 0.0, 1e-5);
+  EXPECT_NEAR(deepest / (stop - 1.0 / omega) - 1.0, 0.0, 1e-5);
   EXPECT_NEAR(push / (-1.0e4 * (1.0 / omega)) - 1.0, 0.0, 1e-5);
   EXPECT_NEAR(rebound - 1.0, 0.0, 1e-5);
   EXPECT_NEAR(left - entered, M_PI / omega, 3e-4);

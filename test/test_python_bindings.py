@@ -93,8 +93,11 @@ def test_hanging_chain_tension_is_the_submerged_weight_below():
 
 
 def test_an_elastic_chain_stretches_by_the_weight_below():
-    """With cable.axial_stiffness each link stretches by T l / EA under the tension at its far end (the
-    weight below it: its own end carries everything outboard); the snapshot carries the strains."""
+    """With cable.axial_stiffness each link stretches by T l / EA under the tension in its stretch: the
+    weight below its far end and the half of its own weight that rides there (docs/MODEL.md section 12),
+    which is the continuum's tension at the link's middle; the snapshot carries the strains. The tip then
+    hangs where the elastic rod's does, L + (W L + w L^2 / 2) / EA (W the load's submerged weight, w the
+    cable's per length): the tension is linear along the rod, and the midpoint rule sums it exactly."""
     cfg = hanging_config()
     ea = 2.0e5  # [N]
     cfg["cable"]["axial_stiffness"] = ea
@@ -104,14 +107,16 @@ def test_an_elastic_chain_stretches_by_the_weight_below():
     below = submerged_weight_below(cfg)
     n, l = cfg["cable"]["links"], cfg["cable"]["length"] / cfg["cable"]["links"]
     link = below[0] - below[1]
-    far = below - link  # the tension at each link's far end [N]
+    far = below - 0.5 * link  # the tension in each link's stretch [N]
     # The elastic statics' fixed point stops at 1e-12 of the length; the sums are ~10 terms.
     np.testing.assert_allclose(s.strain, far / ea, rtol=1e-9)
     np.testing.assert_allclose(s.stretched_length, l * (1.0 + far / ea), rtol=1e-12)
     np.testing.assert_allclose(s.far_tension, far, rtol=1e-9)
     assert s.slack_links == 0
-    # The tip hangs the stretched length down.
+    # The tip hangs the stretched length down, the elastic rod's.
     assert s.link_ends[-1, 2] == pytest.approx(n * l + (far / ea * l).sum(), rel=1e-12)
+    length, w, tip = n * l, link / l, below[0] - n * link
+    assert s.link_ends[-1, 2] == pytest.approx(length + (tip * length + w * length ** 2 / 2) / ea, rel=1e-12)
 
 
 

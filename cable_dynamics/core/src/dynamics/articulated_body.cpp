@@ -25,6 +25,7 @@
 
 #include "cable_dynamics/dynamics/fluid.h"
 #include "cable_dynamics/dynamics/hot_path.h"
+#include "cable_dynamics/dynamics/kinematics.h"
 
 namespace cable_dynamics {
 namespace {
@@ -76,6 +77,22 @@ EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainDeployment& deployed, LinkBloc
   }
 }
 
+/// With axial elasticity: each link's far-end point (LinkConstants::far_mass, beyond its stretch) moves with
+/// the far end, whose known acceleration is a0 + (l + s) beta + 2 s' u' (kinematics.h); its bias
+/// m_f a0_far - w_f e_z joins the outboard part's in the backward pass. On vectors, ahead of the serial pass.
+EIGEN_ALWAYS_INLINE void farPointPass(const ChainDeployment& deployed, LinkBlocks& links) {
+  for (int b = deployed.firstBlock(); b < links.blocks(); ++b) {
+    const LinkConstants& c = deployed.block(b);
+    LinkBlock& block = links.block(b);
+    CABLE_LANE_LOOP
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const Vec3 far_acc = farEndKnownAcceleration(block.known_acc[i], block.beta[i], block.axis_rate[i],
+                                                   c.length[i] + block.stretch[i], block.stretch_rate[i]);
+      block.far_bias.set(i, c.far_mass[i] * far_acc - Vec3{0.0, 0.0, c.far_weight[i]});
+    }
+  }
+}
+
 /// From the load inwards, fold everything outboard of joint k into (M_k, F_k). The load is a point mass
 /// at the tip: J_n = m_L a_n - F_L = m_L d_n + (m_L a0_n - F_L). Returns F_0, the force on the whole
 /// chain at the base when the base end does not accelerate beyond its known part (d_0 = 0).
@@ -117,6 +134,10 @@ EIGEN_ALWAYS_INLINE Vec3 backwardPass(const ChainModel& model, ChainData& data, 
     const double l = kAxial ? c.length[i] + block.stretch[i] : c.length[i];
     double stretch_inverse = 0.0;  // 1 / (u^T M u) of the stretch's elimination (0 when rigid or locked)
     if (kAxial) {
+      // The far-end point, outboard of the stretch and inboard of joint k + 1: it moves as that joint does.
+      const double far_mass = c.far_mass[i];
+      child = {child.xx + far_mass, child.xy, child.xz, child.yy + far_mass, child.yz, child.zz + far_mass};
+      child_force = child_force + block.far_bias[i];
       const bool locked = model.stretchLocked(k);
       const Vec3 u = block.u[i], m_u = child * u;
       const double inverse = locked ? 0.0 : 1.0 / dot(u, m_u);
@@ -356,6 +377,7 @@ bool tipVelocityProjection(const ChainModel& model, ChainData& data, const Eigen
   omega_change.setZero(3, n);
   stretch_rate_change.setZero(model.axial() ? n : 0);
   linkTermsPass(data.deployed, data.links);
+  if (model.axial()) farPointPass(data.deployed, data.links);
   // The impulse p on the load that changes the tip's velocity by `velocity_change`: -R p = dv (an impulse
   // is a force over unit time).
   const Eigen::Vector3d impulse = tipForceFor(holdSums(model, data), velocity_change);
@@ -379,6 +401,7 @@ bool tipVelocityProjection(const ChainModel& model, ChainData& data, const Eigen
 
 CABLE_HOT_PATH bool solveArticulatedBody(const ChainModel& model, ChainData& data, bool all_joint_forces) {
   linkTermsPass(data.deployed, data.links);
+  if (model.axial()) farPointPass(data.deployed, data.links);
   if (model.heldTip() && !solveHoldForce(model, data)) return false;
   solvePasses(model, data, all_joint_forces);
   return true;

@@ -120,19 +120,31 @@ void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
   c.mass_per_length[i] = deployed ? per_length : 0.0;
   c.added[i] = added;
   c.across[i] = c.mass_per_length[i] + added;
-  c.weight[i] = g * (p.submerged_mass(k) + points.sub0);
-  c.weight_moment[i] = g * (0.5 * l * p.submerged_mass(k) + points.sub1);
-  c.translational[i] = l * c.across[i] + points.mass0 + points.added0;
-  c.half_moment[i] = 0.5 * l * l * c.across[i] + points.mass1 + points.added1;
-  c.third_moment[i] = l * l * l / 3.0 * c.across[i] + points.mass2 + points.added2;
+  // EA / l and c_a / l of the link's stretch.
+  const bool stretches = deployed && axial_ && !(last_locked_ && k == n_ - 1);
+  // With a stretch, half of the cable's own mass (and its weight) rides at the far end beyond it, and the
+  // link's body keeps the rest with the moments that make the two together the uniform rod at s = 0: mass
+  // m/2, first moment 0, second moment m l^2/3 - (m/2) l^2 (docs/MODEL.md section 12). The axial modes
+  // are then lumped as a centred scheme lumps them (second order in n), the rotations are unchanged. Not
+  // with a winch: its link's mass changes as it pays out, and a far-end point would gain mass at the far
+  // end's velocity, which the winch's energy booking does not have (every link's mass at its base end).
+  const double far_mass = stretches && !has_winch_ ? 0.5 * m : 0.0;
+  const double far_weight = stretches && !has_winch_ ? 0.5 * g * p.submerged_mass(k) : 0.0;
+  c.far_mass[i] = far_mass;
+  c.far_weight[i] = far_weight;
+  c.weight[i] = g * (p.submerged_mass(k) + points.sub0) - far_weight;
+  c.weight_moment[i] = g * (0.5 * l * p.submerged_mass(k) + points.sub1) - far_weight * l;
+  c.translational[i] = l * c.across[i] + points.mass0 + points.added0 - far_mass;
+  c.half_moment[i] = 0.5 * l * l * c.across[i] + points.mass1 + points.added1 - far_mass * l;
+  c.third_moment[i] = l * l * l / 3.0 * c.across[i] + points.mass2 + points.added2 - far_mass * l * l;
   // The translation integral over the link already holds m l^2/12; the rest of I_T is the thickness.
   c.thick_transverse[i] = m * (radius * radius / 4.0);
   c.own_transverse[i] = c.third_moment[i] + c.thick_transverse[i];
   c.polar[i] = p.inertia_polar(k);
   c.inverse_polar[i] = deployed ? 1.0 / p.inertia_polar(k) : 0.0;
-  c.structure0[i] = m + points.mass0;
-  c.structure1[i] = 0.5 * l * m + points.mass1;
-  c.structure2[i] = l * l / 3.0 * m + points.mass2;
+  c.structure0[i] = m + points.mass0 - far_mass;
+  c.structure1[i] = 0.5 * l * m + points.mass1 - far_mass * l;
+  c.structure2[i] = l * l / 3.0 * m + points.mass2 - far_mass * l * l;
   c.point_added0[i] = points.added0;
   c.point_added1[i] = points.added1;
   c.point_added2[i] = points.added2;
@@ -140,8 +152,6 @@ void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
       deployed ? LinkDrag::coefficients(rho, 2.0 * radius, p.drag_normal(k), p.drag_tangential(k)) : DragCoefficients{};
   c.drag_normal[i] = drag.normal;
   c.drag_tangential[i] = drag.tangential;
-  // EA / l and c_a / l of the link's stretch (a winch is refused with axial elasticity: l is configured).
-  const bool stretches = deployed && axial_ && !(last_locked_ && k == n_ - 1);
   c.axial_stiffness[i] = stretches ? p.axial_stiffness(k) / l : 0.0;
   c.axial_damping[i] = stretches ? p.axial_damping / l : 0.0;
 }

@@ -22,6 +22,11 @@ CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const Cha
                           0.5 * constants.thick_transverse[i] * (dot(omega, omega) - spin * spin) +
                           0.5 * constants.polar[i] * spin * spin;
       potential_lanes[i] -= constants.weight[i] * block.base_pos.z[i] + constants.weight_moment[i] * axis.z;
+      // The far-end point beyond the stretch (axial elasticity; zero mass otherwise), at l + s along u.
+      const double lever = constants.length[i] + block.stretch[i];
+      const Vec3 far_vel = v + lever * c + block.stretch_rate[i] * axis;
+      kinetic_lanes[i] += 0.5 * constants.far_mass[i] * dot(far_vel, far_vel);
+      potential_lanes[i] -= constants.far_weight[i] * (block.base_pos.z[i] + lever * axis.z);
     }
   }
   kinetic = 0.5 * model.load().mass * data.tip_velocity.squaredNorm();

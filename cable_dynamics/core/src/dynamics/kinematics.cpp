@@ -68,7 +68,7 @@ CABLE_HOT_PATH void computeKinematics(const ChainModel& model, ChainData& data, 
     const Vec3 u = block.u[i], axis_rate = block.axis_rate[i];
     pos = pos + lever * u;
     vel = vel + lever * axis_rate + rate * u;
-    acc = acc + lever * block.beta[i] + (2.0 * rate) * axis_rate;
+    acc = farEndKnownAcceleration(acc, block.beta[i], axis_rate, lever, rate);
   }
   data.tip_position = toEigen(pos);
   data.tip_velocity = toEigen(vel);

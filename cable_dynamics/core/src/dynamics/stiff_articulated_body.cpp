@@ -32,6 +32,7 @@
 #include "cable_dynamics/dynamics/forces/point_drag.h"
 #include "cable_dynamics/dynamics/forces/tip_clamp.h"
 #include "cable_dynamics/dynamics/hot_path.h"
+#include "cable_dynamics/dynamics/kinematics.h"
 #include "cable_dynamics/dynamics/link_rates.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
 
@@ -102,6 +103,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   for (int k = n - 1; k >= first && !use_last_tension; --k) {
     StiffLinkTerms& t = links_[k];
     const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
+    outboard.z() += data.deployed.get(&LinkConstants::far_weight, k);  // the far-end point's (axial elasticity)
     const Eigen::Vector3d g = t.lever * outboard + blocks.get(&LinkBlock::moment, k);
     t.geometric = std::max(0.0, g.dot(u));
     outboard += blocks.get(&LinkBlock::force, k);
@@ -316,6 +318,16 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     const int i = LinkBlocks::lane(k);
     const double l = c.length[i];
     const Eigen::Vector3d u = toEigen(block.u[i]);
+    if (axial) {
+      // The far-end point (LinkConstants::far_mass), outboard of the stretch and inboard of joint k + 1:
+      // its mass and its bias at the far end's known acceleration (articulated_body.cpp, farPointPass).
+      const double far_mass = c.far_mass[i];
+      const Vec3 far_acc = farEndKnownAcceleration(block.known_acc[i], block.beta[i], block.axis_rate[i],
+                                                   l + block.stretch[i], block.stretch_rate[i]);
+      t.far_bias = far_mass * toEigen(far_acc) - c.far_weight[i] * Eigen::Vector3d::UnitZ();
+      child_vv.diagonal().array() += far_mass;
+      child_pv += t.far_bias;
+    }
     if (axial && !model.stretchLocked(k)) {
       // The prismatic joint at the far end (axial elasticity): the outboard part passes along u the
       // stretch's tension and its impedance, u . J_v = -(T - extra) - (cd c + ck k) s'', so s'' =
@@ -420,6 +432,10 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
   tip_tension_ = -joint.dot(blocks.get(&LinkBlock::u, n - 1));
   for (int k = n - 1; k >= first; --k) {
     StiffLinkTerms& t = links_[k];
+    if (axial) {  // the far-end point, at joint k + 1's acceleration
+      const Eigen::Vector3d far_delta = k + 1 < n ? links_[k + 1].delta_acc : tip_delta_;
+      joint += data.deployed.get(&LinkConstants::far_mass, k) * far_delta + t.far_bias;
+    }
     joint += t.own_vr * t.angular_acc + t.own_vv * t.delta_acc + t.own_bias;
     t.tension = -joint.dot(blocks.get(&LinkBlock::u, k));
   }

@@ -329,13 +329,17 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
     // Axial elasticity: the stretch of link k moves everything beyond its far end along its axis, so the
     // axial modes are those of a chain of point masses (link k+1 rigidly between the stretches k and k+1;
     // the load, or the ROV, beyond the last) on springs EA / l and dampers c_a / l. Gershgorin's row of
-    // the mass beyond stretch k: 2 (k_k + k_{k+1}) / m_{k+1}, and the same for the dampers.
+    // the mass beyond stretch k: 2 (k_k + k_{k+1}) / m, and the same for the dampers, with m the far-end
+    // point's m_k / 2 and link k+1's body, m_{k+1} / 2 (all of it when its stretch is locked), or the load.
     const double load_mass = p.load_mass + (params.load.mode == LoadMode::kBody ? 0.0 : params.load.added_mass);
+    const bool split = !params.winch.enabled;  // ChainModel: no far-end points with a winch
+    const auto stretches = [&](int k) { return k + 1 < n || load_mass > 0.0; };
     for (int k = first; k < n; ++k) {
       const double l = p.length(k), spring = p.axial_stiffness(k) / l, damper = p.axial_damping / l;
       const bool last = k + 1 == n;
-      if (last && !(load_mass > 0.0)) continue;  // locked: nothing beyond it (ChainModel::lastStretchLocked)
-      const double beyond = last ? load_mass : p.mass(k + 1);
+      if (!stretches(k)) continue;  // locked: nothing beyond it (ChainModel::lastStretchLocked)
+      const double next_body = last ? load_mass : (split && stretches(k + 1) ? 0.5 : 1.0) * p.mass(k + 1);
+      const double beyond = (split ? 0.5 * p.mass(k) : 0.0) + next_body;
       const double next_spring = last ? 0.0 : p.axial_stiffness(k + 1) / p.length(k + 1);
       const double next_damper = last ? 0.0 : p.axial_damping / p.length(k + 1);
       stiffest.consider(2.0 * (damper + next_damper) / beyond, 2.0 * (spring + next_spring) / beyond,

@@ -24,6 +24,7 @@ StaticEquations::StaticEquations(const ChainModel& model, const ChainDeployment&
       length_(m_),
       weight_(m_),
       weight_moment_(m_),
+      far_weight_(m_),
       bend_stiffness_(m_),
       fold_diameter_(m_) {
   const LinkProperties& p = deployed.properties();
@@ -34,6 +35,7 @@ StaticEquations::StaticEquations(const ChainModel& model, const ChainDeployment&
     length_(i) = deployed.get(&LinkConstants::length, k) + (problem.stretch.size() > k ? problem.stretch(k) : 0.0);
     weight_(i) = deployed.get(&LinkConstants::weight, k);  // the attachments' included
     weight_moment_(i) = deployed.get(&LinkConstants::weight_moment, k);
+    far_weight_(i) = deployed.get(&LinkConstants::far_weight, k);  // at the far end, l + s out
     // A winch pays out from the drum: the first deployed link leaves the base's clamp, with the spring of
     // the joint it has in the model.
     bend_stiffness_(i) = bending ? p.stiffness_elevation(k) : 0.0;
@@ -57,8 +59,8 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
                                 Eigen::Vector3d& moment) const {
   const int k = first_ + i;
   const double l = length_(i);
-  force = Eigen::Vector3d(0.0, 0.0, weight_(i));
-  moment = Eigen::Vector3d(0.0, 0.0, weight_moment_(i));
+  force = Eigen::Vector3d(0.0, 0.0, weight_(i) + far_weight_(i));
+  moment = Eigen::Vector3d(0.0, 0.0, weight_moment_(i) + l * far_weight_(i));
   addSeabedContact(i, u, p, force, moment);
   if (!in_water_) return;
   // The same quadrature as the dynamics, at zero velocity: the relative velocity is the current alone.

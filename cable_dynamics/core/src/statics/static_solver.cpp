@@ -198,10 +198,12 @@ StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& de
   return out;
 }
 
-/// The tension at link k's far end in a solution, T_k = -J_{k+1} . u_k (the load's pull at the last) [N].
-double farEndTension(const StaticSolution& solved, int k, int n) {
+/// The tension in link k's stretch in a solution, T_k = -(J_{k+1} - w_f e_z) . u_k: what is outboard of joint
+/// k + 1 (the load's pull at the last) and the far-end point's weight w_f (docs/MODEL.md section 12) [N].
+double farEndTension(const ChainDeployment& deployed, const StaticSolution& solved, int k, int n) {
   const Eigen::Vector3d outboard = k + 1 < n ? Eigen::Vector3d(solved.joint_force.col(k + 1)) : solved.tip_force;
-  return -outboard.dot(solved.axes.col(k));
+  const double far_weight = deployed.get(&LinkConstants::far_weight, k);
+  return -outboard.dot(solved.axes.col(k)) + far_weight * solved.axes(2, k);
 }
 
 /// Each link's stretch under the tension at its far end (farEndTension), tension only, for the axial
@@ -211,7 +213,7 @@ Eigen::VectorXd stretchUnderTension(const ChainModel& model, const ChainDeployme
   const int n = model.links();
   Eigen::VectorXd stretch = Eigen::VectorXd::Zero(n);
   for (int k = first; k < n; ++k) {
-    const double tension = farEndTension(solved, k, n);
+    const double tension = farEndTension(deployed, solved, k, n);
     const double spring = deployed.get(&LinkConstants::axial_stiffness, k);
     stretch(k) = spring > 0.0 && tension > 0.0 ? tension / spring : 0.0;
   }
@@ -227,7 +229,7 @@ void refuseCompression(const ChainModel& model, const ChainDeployment& deployed,
   double largest = 0.0, most = 0.0;
   int where = -1;
   for (int k = first; k < n; ++k) {
-    const double tension = farEndTension(solved, k, n);
+    const double tension = farEndTension(deployed, solved, k, n);
     largest = std::max(largest, std::abs(tension));
     if (deployed.get(&LinkConstants::axial_stiffness, k) > 0.0 && tension < most) {
       most = tension;

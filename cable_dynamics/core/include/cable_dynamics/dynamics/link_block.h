@@ -105,6 +105,8 @@ struct alignas(64) LinkConstants {
   double drag_tangential[kBlockLanes];  ///< 1/2 rho C_t pi d, times |v_t| v_t per length [kg/m^2]
   double axial_stiffness[kBlockLanes];  ///< EA / l, the stretch's spring [N/m] (0: rigid links)
   double axial_damping[kBlockLanes];    ///< c_a / l, its damper on the stretch rate [N s/m]
+  double far_mass[kBlockLanes];         ///< m/2 carried at the far end beyond the stretch (0: rigid) [kg]
+  double far_weight[kBlockLanes];       ///< its submerged weight, + down [N]
 };
 
 /// Eight links' state-derived quantities and the recursion's intermediate results, rewritten by every
@@ -138,6 +140,7 @@ struct alignas(64) LinkBlock {
   Lanes3 own_moment;          ///< (m' + m_a') (l^2/2 a0 + l^3/3 beta) - first moment of F [N m]
   double bias_torque1[kBlockLanes], bias_torque2[kBlockLanes];  ///< gyroscopic minus joint torque on e1, e2 [N m]
   double spin_acc[kBlockLanes];             ///< angular acceleration about u [rad/s^2]
+  Lanes3 far_bias;  ///< the far-end point's m_f a0_far - f_far, a0_far its known acceleration [N]
   // The recursion's backward pass.
   Lanes3 x1, x2;              ///< transverse accelerations y = y_g - X^T a_k [1/m]
   double y1[kBlockLanes], y2[kBlockLanes];  ///< y_g [rad/s^2]

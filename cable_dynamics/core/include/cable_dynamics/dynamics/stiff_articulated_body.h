@@ -60,6 +60,7 @@ struct StiffLinkTerms {
   // The link's own force rows, kept for the joint forces: force = own_vr alpha + own_vv d + own_bias.
   Eigen::Matrix3d own_vr = Eigen::Matrix3d::Zero(), own_vv = Eigen::Matrix3d::Zero();
   Eigen::Vector3d own_bias = Eigen::Vector3d::Zero();  ///< [N]
+  Eigen::Vector3d far_bias = Eigen::Vector3d::Zero();  ///< the far-end point's m_f a0_far - w_f e_z (axial elasticity) [N]
   double tension = 0.0;  ///< at the base end, -J_k . u_k, from the last solve() [N]
   // Axial elasticity: the prismatic joint at the far end (docs/MODEL.md section 12) with its impedance
   // cd c + ck k (c, k: the stretch law's derivatives, 0 while slack).

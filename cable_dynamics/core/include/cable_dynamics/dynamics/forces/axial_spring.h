@@ -14,20 +14,23 @@ namespace cable_dynamics {
 /// counter (CableSimulator::watchStretches) and the implicit step's matrix (linearizeStretches).
 constexpr double kClearlySlack = 1e-3;
 
-/// A slack link's chord may shorten to half its length (the cable between its joints snaking), no
-/// further: beyond, its stretch meets a stop as stiff as its spring. Without it a slack link telescoped
+/// A slack link's chord may shorten to two thirds of its length (the cable between its joints snaking),
+/// no further: beyond, its stretch meets a stop as stiff as its spring. Without it a slack link telescoped
 /// without limit: config/rov_dive.yaml with EA 1e8 N had its last link at -23 times its length after
-/// 300 s (the tether's end 23 links from the ROV it is tied to), and the run ended with exit 0.
-constexpr double kSlackStop = 0.5;
+/// 300 s (the tether's end 23 links from the ROV it is tied to), and the run ended with exit 0. Why a
+/// third: half of the link's mass rides at its far end, m/2 at l + s, and the link's body keeps a second
+/// moment of -m l^2/6 about its base (docs/MODEL.md section 12); the link's inertia across its axis,
+/// (m/2) (l + s)^2 - m l^2/6 with nothing beyond it, stays positive only for s > -0.42 l.
+constexpr double kSlackStop = 1.0 / 3.0;
 
 /// T = k s + c s' while the link is stretched (s > 0), clipped at zero (the damper does not push); 0 while
-/// it is slack down to the stop (-l / 2 < s <= 0): a cable carries no compression; beyond the stop
-/// (s < -l / 2) T = k (s + l / 2) + c s', clipped at zero from below (the stop pushes, never pulls).
+/// it is slack down to the stop (-l / 3 < s <= 0): a cable carries no compression; beyond the stop
+/// (s < -l / 3) T = k (s + l / 3) + c s', clipped at zero from below (the stop pushes, never pulls).
 /// k = EA / l [N/m], c = c_a / l [N s/m], l the link's unstretched length [m].
 struct AxialSpring {
   /// How far the stretch s [m] is past the stop of a link of length l [m] (< 0 past it).
   static double pastStop(double s, double length) { return s + kSlackStop * length; }
-  /// The spring's extension [m]: s while stretched (> 0), s + l / 2 past the stop (< 0), 0 between.
+  /// The spring's extension [m]: s while stretched (> 0), s + l / 3 past the stop (< 0), 0 between.
   static double extension(double s, double length) {
     if (s > 0.0) return s;
     const double past = pastStop(s, length);
@@ -46,14 +49,14 @@ struct AxialSpring {
   static double dampedRate(double s, double rate, double length, double length_rate) {
     return length_rate != 0.0 && length > 0.0 ? rate - s * length_rate / length : rate;
   }
-  /// Strain energy 1/2 k e^2 [J] (1/2 k s^2 while stretched, 1/2 k (s + l / 2)^2 past the stop, 0
+  /// Strain energy 1/2 k e^2 [J] (1/2 k s^2 while stretched, 1/2 k (s + l / 3)^2 past the stop, 0
   /// between): the tension's elastic part has this potential.
   static double energy(double k, double s, double length) {
     const double e = extension(s, length);
     return 0.5 * k * e * e;
   }
   /// The energy's rate with the unstretched length l at a fixed s [J/m], for k = EA / l:
-  /// d/dl (EA e^2 / (2 l)) = -E / l + k e de/dl, with de/dl = l / 2's share past the stop, 0 otherwise.
+  /// d/dl (EA e^2 / (2 l)) = -E / l + k e de/dl, with de/dl = kSlackStop past the stop, 0 otherwise.
   static double energyPerLength(double k, double s, double length) {
     const double e = extension(s, length);
     return -0.5 * k * e * e / length + (e < 0.0 ? k * e * kSlackStop : 0.0);
