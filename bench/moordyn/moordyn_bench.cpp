@@ -148,6 +148,11 @@ struct Deployment {
 
 /// MDB_VERBOSE=1 in the environment: MoorDyn's stdout not muted, and every run's tension series printed.
 const bool kVerbose = std::getenv("MDB_VERBOSE") != nullptr;
+// MDB_SEGMENT_TENSION=1: the project's fairlead tension is its first link's stretch's (the tension in the
+// line's first segment, without the fairlead node's half link: what a lumped-mass code's first segment
+// carries) instead of the force on the fairlead (base_force). A diagnostic of what the reported quantity
+// is worth against the reference, whose convention the test data do not state (bench/README.md).
+const bool kSegmentTension = std::getenv("MDB_SEGMENT_TENSION") != nullptr;
 
 /// `per_step`: one MoorDyn_Step call per MoorDyn time step; otherwise one call per 0.1 s sample, as
 /// MoorDyn's chain test drives it (MoorDyn then takes its steps within the call).
@@ -280,6 +285,7 @@ Run runProject(const CableParams& params, double duration, Deployment* record) {
     if (record) {  // the deployment at this sample, for MoorDyn's line to follow
       record->speed.push_back(snap.winch_speed);
     }
+    if (kSegmentTension && snap.chain.far_tension.size() > 0) return snap.chain.far_tension(0);  // N
     return sim.hasWinch() ? snap.line_pull : snap.chain.base_force.norm();  // N
   };
   run.t.push_back(0.0);
@@ -291,6 +297,7 @@ Run runProject(const CableParams& params, double duration, Deployment* record) {
     cable_dynamics::SimulationSnapshot rest;
     at_rest.snapshot(rest);
     run.tension[0] = at_rest.hasWinch() ? rest.line_pull : rest.chain.base_force.norm();
+    if (kSegmentTension && rest.chain.far_tension.size() > 0) run.tension[0] = rest.chain.far_tension(0);
   }
   const int samples = int(std::lround(duration / kSample));
   for (int k = 0; k < samples && run.ok; ++k) {
