@@ -25,6 +25,7 @@ ChainModel::ChainModel(const CableParams& configured) : ChainModel(withDrumSlots
 ChainModel::ChainModel(const CableParams& params, int /*slots built*/)
     : n_(params.links),
       has_winch_(params.winch.enabled),
+      far_points_(farPoints(params)),
       nominal_(deriveLinkProperties(params)),
       formulation_(params.simulation.formulation),
       fluid_density_(params.fluid.density),
@@ -128,8 +129,9 @@ void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
   // are then lumped as a centred scheme lumps them (second order in n), the rotations are unchanged. Not
   // with a winch: its link's mass changes as it pays out, and a far-end point would gain mass at the far
   // end's velocity, which the winch's energy booking does not have (every link's mass at its base end).
-  const double far_mass = stretches && !has_winch_ ? 0.5 * m : 0.0;
-  const double far_weight = stretches && !has_winch_ ? 0.5 * g * p.submerged_mass(k) : 0.0;
+  const bool far_point = stretches && far_points_;
+  const double far_mass = far_point ? 0.5 * m : 0.0;
+  const double far_weight = far_point ? 0.5 * g * p.submerged_mass(k) : 0.0;
   c.far_mass[i] = far_mass;
   c.far_weight[i] = far_weight;
   c.weight[i] = g * (p.submerged_mass(k) + points.sub0) - far_weight;

@@ -22,9 +22,17 @@ CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const Cha
                           0.5 * constants.thick_transverse[i] * (dot(omega, omega) - spin * spin) +
                           0.5 * constants.polar[i] * spin * spin;
       potential_lanes[i] -= constants.weight[i] * block.base_pos.z[i] + constants.weight_moment[i] * axis.z;
-      // The far-end point beyond the stretch (axial elasticity; zero mass otherwise), at l + s along u.
+    }
+  }
+  // With axial elasticity, each link's far-end point beyond its stretch (LinkConstants::far_mass), at l + s
+  // along u; rigid links have none, and their energy check skips the pass.
+  for (int b = data.deployed.firstBlock(); model.axial() && b < data.links.blocks(); ++b) {
+    const LinkConstants& constants = data.deployed.block(b);
+    const LinkBlock& block = data.links.block(b);
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const Vec3 axis = block.u[i];
       const double lever = constants.length[i] + block.stretch[i];
-      const Vec3 far_vel = v + lever * c + block.stretch_rate[i] * axis;
+      const Vec3 far_vel = block.base_vel[i] + lever * block.axis_rate[i] + block.stretch_rate[i] * axis;
       kinetic_lanes[i] += 0.5 * constants.far_mass[i] * dot(far_vel, far_vel);
       potential_lanes[i] -= constants.far_weight[i] * (block.base_pos.z[i] + lever * axis.z);
     }

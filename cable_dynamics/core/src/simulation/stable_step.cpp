@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "cable_dynamics/dynamics/chain_model.h"
 #include "cable_dynamics/dynamics/elastic_joints.h"
 #include "cable_dynamics/dynamics/seabed_contact.h"
 #include "cable_dynamics/params/config_section.h"
@@ -332,7 +333,7 @@ StableStep estimateStableStep(const CableParams& params, const LinkProperties& p
     // the mass beyond stretch k: 2 (k_k + k_{k+1}) / m, and the same for the dampers, with m the far-end
     // point's m_k / 2 and link k+1's body, m_{k+1} / 2 (all of it when its stretch is locked), or the load.
     const double load_mass = p.load_mass + (params.load.mode == LoadMode::kBody ? 0.0 : params.load.added_mass);
-    const bool split = !params.winch.enabled;  // ChainModel: no far-end points with a winch
+    const bool split = ChainModel::farPoints(params);
     const auto stretches = [&](int k) { return k + 1 < n || load_mass > 0.0; };
     for (int k = first; k < n; ++k) {
       const double l = p.length(k), spring = p.axial_stiffness(k) / l, damper = p.axial_damping / l;

@@ -24,7 +24,6 @@ StaticEquations::StaticEquations(const ChainModel& model, const ChainDeployment&
       length_(m_),
       weight_(m_),
       weight_moment_(m_),
-      far_weight_(m_),
       bend_stiffness_(m_),
       fold_diameter_(m_) {
   const LinkProperties& p = deployed.properties();
@@ -33,9 +32,10 @@ StaticEquations::StaticEquations(const ChainModel& model, const ChainDeployment&
     const int k = first_ + i;
     // With axial elasticity the lever to the far end is l + s; the link's own mass stays on its l.
     length_(i) = deployed.get(&LinkConstants::length, k) + (problem.stretch.size() > k ? problem.stretch(k) : 0.0);
-    weight_(i) = deployed.get(&LinkConstants::weight, k);  // the attachments' included
-    weight_moment_(i) = deployed.get(&LinkConstants::weight_moment, k);
-    far_weight_(i) = deployed.get(&LinkConstants::far_weight, k);  // at the far end, l + s out
+    // The attachments' included, and the far-end point's beyond the stretch (axial elasticity), l + s out.
+    const double far_weight = deployed.get(&LinkConstants::far_weight, k);
+    weight_(i) = deployed.get(&LinkConstants::weight, k) + far_weight;
+    weight_moment_(i) = deployed.get(&LinkConstants::weight_moment, k) + length_(i) * far_weight;
     // A winch pays out from the drum: the first deployed link leaves the base's clamp, with the spring of
     // the joint it has in the model.
     bend_stiffness_(i) = bending ? p.stiffness_elevation(k) : 0.0;
@@ -59,8 +59,8 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
                                 Eigen::Vector3d& moment) const {
   const int k = first_ + i;
   const double l = length_(i);
-  force = Eigen::Vector3d(0.0, 0.0, weight_(i) + far_weight_(i));
-  moment = Eigen::Vector3d(0.0, 0.0, weight_moment_(i) + l * far_weight_(i));
+  force = Eigen::Vector3d(0.0, 0.0, weight_(i));
+  moment = Eigen::Vector3d(0.0, 0.0, weight_moment_(i));
   addSeabedContact(i, u, p, force, moment);
   if (!in_water_) return;
   // The same quadrature as the dynamics, at zero velocity: the relative velocity is the current alone.

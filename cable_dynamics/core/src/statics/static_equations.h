@@ -103,9 +103,8 @@ class StaticEquations {
   StaticProblem problem_;
   int first_, m_;
   Eigen::VectorXd length_;          ///< (m) [m]
-  Eigen::VectorXd weight_;          ///< (m) submerged weight, + down [N]
+  Eigen::VectorXd weight_;          ///< (m) submerged weight with the far-end point's, + down [N]
   Eigen::VectorXd weight_moment_;   ///< (m) its first moment about the base end, along the axis [N m]
-  Eigen::VectorXd far_weight_;      ///< (m) the far-end point's weight beyond the stretch, + down [N]
   Eigen::VectorXd bend_stiffness_;  ///< (m) joint i's k_b [N m/rad]
   Eigen::VectorXd fold_diameter_;   ///< (m) the larger outer diameter of joint i's two links [m] (its fold stop)
   double fold_tension_ = 0.0;       ///< the fold stops' hanging tension [N] (ChainModel::foldStopTension); 0: none

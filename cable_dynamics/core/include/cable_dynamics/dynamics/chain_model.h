@@ -48,6 +48,9 @@ class ChainModel {
   /// of the base link's configured length, straight down and at rest) and winch.slots_built set. Without a
   /// winch, or when the slots are already built, `configured` as it is.
   static CableParams withDrumSlots(const CableParams& configured);
+  /// Whether a stretching link of these params carries half of its mass at its far end beyond its stretch
+  /// (docs/MODEL.md section 12): yes but with a winch, whose link changes its mass as it pays out.
+  static bool farPoints(const CableParams& params) { return !params.winch.enabled; }
 
   int links() const { return n_; }
   /// Per-link description of every slot as configured (a winch's drum slots at the length they will have
@@ -130,6 +133,7 @@ class ChainModel {
   int n_;
   int initial_first_ = 0;  ///< winch.stored_links
   bool has_winch_ = false;
+  bool far_points_ = false;  ///< farPoints(params)
   bool axial_ = false;
   bool last_locked_ = false;
   bool held_tip_ = false;
