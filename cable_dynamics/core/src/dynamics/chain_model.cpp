@@ -134,6 +134,8 @@ void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
   const double far_weight = far_point ? 0.5 * g * p.submerged_mass(k) : 0.0;
   c.far_mass[i] = far_mass;
   c.far_weight[i] = far_weight;
+  // The drag along the link shared by the lever rule like the weight (externalLoads): second order too.
+  c.far_share[i] = far_point ? 1.0 / l : 0.0;
   c.weight[i] = g * (p.submerged_mass(k) + points.sub0) - far_weight;
   c.weight_moment[i] = g * (0.5 * l * p.submerged_mass(k) + points.sub1) - far_weight * l;
   c.translational[i] = l * c.across[i] + points.mass0 + points.added0 - far_mass;

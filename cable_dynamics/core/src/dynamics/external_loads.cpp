@@ -1,6 +1,7 @@
 #include "cable_dynamics/dynamics/external_loads.h"
 
 #include <algorithm>
+#include <iterator>
 
 #include "cable_dynamics/dynamics/forces/coupling.h"
 #include "cable_dynamics/dynamics/forces/point_drag.h"
@@ -15,6 +16,7 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
   const bool in_water = model.fluidDensity() > 0.0;
   const bool uniform = current_field.uniform();
   const Vec3 current = toVec3(current_field.uniformValue());
+  const bool far_points = model.farEndPoints();
   double drag_power = 0.0;
   for (int b = data.deployed.firstBlock(); b < data.links.blocks(); ++b) {
     const LinkConstants& constants = data.deployed.block(b);
@@ -26,6 +28,7 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
       block.force.set(i, {0.0, 0.0, constants.weight[i]});
       block.moment.set(i, {0.0, 0.0, constants.weight_moment[i]});
     }
+    if (far_points) std::fill(std::begin(block.far_drag), std::end(block.far_drag), 0.0);
     if (!in_water) continue;
     if (uniform) {
       model.drag().addUniform(current, constants, block);
@@ -39,6 +42,20 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
         block.force.set(i, block.force[i] + toVec3(fd));
         block.moment.set(i, block.moment[i] + toVec3(md));
         block.drag_power[i] = fd.dot(toEigen(block.base_vel[i])) + md.dot(toEigen(block.axis_rate[i]));
+      }
+    }
+    if (far_points) {
+      // The drag along the link, shared by the lever rule as the weight is (chain_model.cpp): the far-end
+      // point beyond the stretch carries u . (the drag's first moment) / l of it, the base end the rest.
+      // Each stretch then carries the drag beyond its link's middle, and the stretches sum a drag that
+      // grows along the line as the midpoint rule does (second order in n; docs/MODEL.md section 12). The
+      // force moves along u to a point that also moves at s', so the drag's power gains f s'.
+      CABLE_LANE_LOOP
+      for (int i = 0; i < kBlockLanes; ++i) {
+        const Vec3 u = block.u[i];
+        const double far = constants.far_share[i] * (dot(u, block.moment[i]) - u.z * constants.weight_moment[i]);
+        block.far_drag[i] = far;
+        block.drag_power[i] += far * block.stretch_rate[i];
       }
     }
     double power = 0.0;  // the padding lanes' drag is zero (zero length)

@@ -324,7 +324,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
       const double far_mass = c.far_mass[i];
       const Vec3 far_acc = farEndKnownAcceleration(block.known_acc[i], block.beta[i], block.axis_rate[i],
                                                    l + block.stretch[i], block.stretch_rate[i]);
-      t.far_bias = far_mass * toEigen(far_acc) - c.far_weight[i] * Eigen::Vector3d::UnitZ();
+      t.far_bias = far_mass * toEigen(far_acc) - c.far_weight[i] * Eigen::Vector3d::UnitZ() - block.far_drag[i] * u;
       child_vv.diagonal().array() += far_mass;
       child_pv += t.far_bias;
     }
@@ -383,8 +383,9 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     const Eigen::Vector3d known = toEigen(block.known_acc[i]), beta = toEigen(block.beta[i]);
     const Eigen::Vector3d omega = toEigen(block.omega[i]), rate = toEigen(block.axis_rate[i]);
     const Eigen::Vector3d mean = l * known + (0.5 * l * l) * beta;
-    const Eigen::Vector3d own_force = c.translational[i] * known + c.half_moment[i] * beta -
-                                      (c.added[i] * u.dot(mean)) * u - toEigen(block.force[i]);
+    Eigen::Vector3d own_force = c.translational[i] * known + c.half_moment[i] * beta -
+                                (c.added[i] * u.dot(mean)) * u - toEigen(block.force[i]);
+    if (axial) own_force += block.far_drag[i] * u;  // the far-end point's share of the drag (far_bias)
     const Eigen::Vector3d own_moment = c.half_moment[i] * known + c.third_moment[i] * beta - toEigen(block.moment[i]);
     const double gyroscopic = c.polar[i] - c.thick_transverse[i];
     a_pr += u.cross(own_moment) + (gyroscopic * u.dot(omega)) * rate - toEigen(block.torque[i]) - t.extra_torque;

@@ -80,6 +80,16 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
   }
 }
 
+double StaticEquations::farDrag(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p) const {
+  const int k = first_ + i;
+  if (!in_water_ || deployed_.get(&LinkConstants::far_share, k) == 0.0) return 0.0;
+  const double l = length_(i);
+  Eigen::Vector3d drag_force, drag_moment;
+  model_.drag().pointwise(current_, l, deployed_.dragCoefficients(k), p, Eigen::Vector3d::Zero(), u, Eigen::Vector3d::Zero(),
+                          drag_force, drag_moment);
+  return u.dot(drag_moment) / l;
+}
+
 void StaticEquations::addSeabedContact(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,
                                        Eigen::Vector3d& moment) const {
   const SeabedContactConstants& c = model_.seabedContact();

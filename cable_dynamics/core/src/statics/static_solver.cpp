@@ -89,6 +89,7 @@ void writeSolution(const ChainModel& model, const ChainDeployment& deployed, con
   out.twists = Eigen::VectorXd::Zero(n);
   out.tension = Eigen::VectorXd::Zero(n);
   out.joint_force = Eigen::Matrix3Xd::Zero(3, n);
+  out.far_drag = Eigen::VectorXd::Zero(n);
   // Zero twist at every joint: sigma_k = sigma_{k-1} + Omega(u_{k-1}, u_k), from the clamp's frame.
   Eigen::Vector3d prev = eq.problem().clamp_moves ? eq.problem().clamp_axis : p.clamp_axis;
   double sigma = eq.problem().clamp_moves ? eq.problem().clamp_twist : p.clamp_twist;
@@ -100,6 +101,7 @@ void writeSolution(const ChainModel& model, const ChainDeployment& deployed, con
     out.twists(k) = sigma;
     out.joint_force.col(k) = s.force.col(i);
     out.tension(k) = -s.force.col(i).dot(u);
+    out.far_drag(k) = eq.farDrag(i, u, s.base.col(i));
     prev = u;
   }
   out.tip_position = eq.tip(s);
@@ -198,12 +200,14 @@ StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& de
   return out;
 }
 
-/// The tension in link k's stretch in a solution, T_k = -(J_{k+1} - w_f e_z) . u_k: what is outboard of joint
-/// k + 1 (the load's pull at the last) and the far-end point's weight w_f (docs/MODEL.md section 12) [N].
+/// The tension in link k's stretch in a solution, T_k = -(J_{k+1} - w_f e_z) . u_k + f_d: what is outboard
+/// of joint k + 1 (the load's pull at the last), the far-end point's weight w_f and its share f_d of the
+/// drag along the link (docs/MODEL.md section 12) [N].
 double farEndTension(const ChainDeployment& deployed, const StaticSolution& solved, int k, int n) {
   const Eigen::Vector3d outboard = k + 1 < n ? Eigen::Vector3d(solved.joint_force.col(k + 1)) : solved.tip_force;
   const double far_weight = deployed.get(&LinkConstants::far_weight, k);
-  return -outboard.dot(solved.axes.col(k)) + far_weight * solved.axes(2, k);
+  const double far_drag = solved.far_drag.size() > k ? solved.far_drag(k) : 0.0;
+  return -outboard.dot(solved.axes.col(k)) + far_weight * solved.axes(2, k) + far_drag;
 }
 
 /// Each link's stretch under the tension at its far end (farEndTension), tension only, for the axial

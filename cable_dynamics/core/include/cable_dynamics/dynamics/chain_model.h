@@ -118,6 +118,8 @@ class ChainModel {
   /// Axial elasticity (cable.axial_stiffness > 0): each link stretches along its axis (its far end is
   /// l + s from its base; docs/MODEL.md section 10), and the state carries s and s' per link.
   bool axial() const { return axial_; }
+  /// The stretching links carry far-end points (axial elasticity and farPoints(params)).
+  bool farEndPoints() const { return axial_ && far_points_; }
   /// With axial elasticity and no mass beyond the last link's far end (no load mass, no ROV body), the
   /// last link's stretch has nothing to accelerate: it stays rigid (and carries no tension there).
   bool lastStretchLocked() const { return axial_ && last_locked_; }
