@@ -356,15 +356,16 @@ Eigen::Vector3d streamedTip(CableSimulator& sim, int n) {
 
 }  // namespace
 
-// The drag along the links, shared by the lever rule between each link's base end and its far-end point
-// beyond the stretch (docs/MODEL.md section 12), against the streamed line's closed forms.
+// The skin friction along the links split with their mass (docs/MODEL.md section 12): the near half's on
+// each link's body, the far half's on its far-end point beyond the stretch, at that point's own velocity;
+// against the streamed line's closed forms.
 // - The dynamics' drag acts on each link's unstretched length l: the line at rest stretches by
 //   f L^2 / (2 EA) (T(p) integrated), and each stretch carries the tension at its link's middle, which
 //   the midpoint rule sums exactly: the tip is there for any n, up to what the run leaves of its start.
 // - The statics' drag acts on the stretched levers l + s: dT/dp = -f (1 + T / EA), T = EA (exp(f (L - p) /
 //   EA) - 1), and the tip streams out to (EA / f) (exp(f L / EA) - 1), which the lumping meets to second
 //   order in n.
-// With the whole drag along a link at its base end (until session 29), each stretch carried the tension
+// With the whole skin friction on each link's body (until session 29), each stretch carried the tension
 // at its far end: the elongation short by f L l / (2 EA), 1 / n of it (first order).
 TEST(AxialElasticity, AStreamedLineStretchesAsItsDragSumsUp) {
   const double f = kStreamedDrag, L = 10.0, ea = 1.0e4;
@@ -391,8 +392,8 @@ TEST(AxialElasticity, AStreamedLineStretchesAsItsDragSumsUp) {
       const double error = (tip.x() - dynamic_tip) / (dynamic_tip - L);
       std::cout << "streamed line, " << integrator << " at " << dt << " s, n = " << n << ": tip x " << tip.x()
                 << " m, closed form " << dynamic_tip << " m; error " << error << " of the elongation\n";
-      // Measured: 5.3e-11 (n = 10) and 8.2e-11 (20) of the elongation, RK4 and implicit alike: what 3 s
-      // leave of the start (the statics' equilibrium, whose drag acts on l + s). Bound 5e-10 (6x). Before
+      // Measured: 1.2e-10 of the elongation at n = 10 and 20, RK4 and implicit alike: what 3 s leave of
+      // the start (the statics' equilibrium, whose drag acts on l + s). Bound 5e-10 (4x). Before
       // (session 28's build): -0.100 and -0.050 implicit, -0.149 and -0.106 RK4 (not yet settled at 3 s).
       EXPECT_LT(std::abs(error), 5e-10);
     }

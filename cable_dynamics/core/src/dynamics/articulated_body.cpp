@@ -79,9 +79,8 @@ EIGEN_ALWAYS_INLINE void linkTermsPass(const ChainDeployment& deployed, LinkBloc
 
 /// With axial elasticity: each link's far-end point (LinkConstants::far_mass, beyond its stretch) moves with
 /// the far end, whose known acceleration is a0 + (l + s) beta + 2 s' u' (kinematics.h); its bias
-/// m_f a0_far - w_f e_z - f_d u joins the outboard part's in the backward pass, f_d being its share of the
-/// drag along the link (LinkBlock::far_drag), which the link's own bias gives up. On vectors, ahead of the
-/// serial pass.
+/// m_f a0_far - w_f e_z - f_d u joins the outboard part's in the backward pass, f_d u being the far half's
+/// skin friction (LinkBlock::far_drag). On vectors, ahead of the serial pass.
 EIGEN_ALWAYS_INLINE void farPointPass(const ChainDeployment& deployed, LinkBlocks& links) {
   for (int b = deployed.firstBlock(); b < links.blocks(); ++b) {
     const LinkConstants& c = deployed.block(b);
@@ -90,9 +89,7 @@ EIGEN_ALWAYS_INLINE void farPointPass(const ChainDeployment& deployed, LinkBlock
     for (int i = 0; i < kBlockLanes; ++i) {
       const Vec3 far_acc = farEndKnownAcceleration(block.known_acc[i], block.beta[i], block.axis_rate[i],
                                                    c.length[i] + block.stretch[i], block.stretch_rate[i]);
-      const Vec3 far_drag = block.far_drag[i] * block.u[i];
-      block.far_bias.set(i, c.far_mass[i] * far_acc - Vec3{0.0, 0.0, c.far_weight[i]} - far_drag);
-      block.own_force.set(i, block.own_force[i] + far_drag);
+      block.far_bias.set(i, c.far_mass[i] * far_acc - Vec3{0.0, 0.0, c.far_weight[i]} - block.far_drag[i] * block.u[i]);
     }
   }
 }

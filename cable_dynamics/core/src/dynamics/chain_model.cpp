@@ -134,8 +134,6 @@ void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
   const double far_weight = far_point ? 0.5 * g * p.submerged_mass(k) : 0.0;
   c.far_mass[i] = far_mass;
   c.far_weight[i] = far_weight;
-  // The drag along the link shared by the lever rule like the weight (externalLoads): second order too.
-  c.far_share[i] = far_point ? 1.0 / l : 0.0;
   c.weight[i] = g * (p.submerged_mass(k) + points.sub0) - far_weight;
   c.weight_moment[i] = g * (0.5 * l * p.submerged_mass(k) + points.sub1) - far_weight * l;
   c.translational[i] = l * c.across[i] + points.mass0 + points.added0 - far_mass;
@@ -155,7 +153,11 @@ void ChainModel::setLinkLength(ChainDeployment& d, int k, double l) const {
   const DragCoefficients drag =
       deployed ? LinkDrag::coefficients(rho, 2.0 * radius, p.drag_normal(k), p.drag_tangential(k)) : DragCoefficients{};
   c.drag_normal[i] = drag.normal;
-  c.drag_tangential[i] = drag.tangential;
+  // The skin friction along the link is split with the mass: the far half's on the far-end point at that
+  // point's own axial velocity (computeExternalLoads), the body's coefficient halved for the near half. Each
+  // stretch then carries the friction beyond its link's middle (second order in n, docs/MODEL.md section 12).
+  c.drag_tangential[i] = far_point ? 0.5 * drag.tangential : drag.tangential;
+  c.far_tangential[i] = far_point ? 0.5 * drag.tangential * l : 0.0;
   c.axial_stiffness[i] = stretches ? p.axial_stiffness(k) / l : 0.0;
   c.axial_damping[i] = stretches ? p.axial_damping / l : 0.0;
 }

@@ -45,17 +45,30 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
       }
     }
     if (far_points) {
-      // The drag along the link, shared by the lever rule as the weight is (chain_model.cpp): the far-end
-      // point beyond the stretch carries u . (the drag's first moment) / l of it, the base end the rest.
-      // Each stretch then carries the drag beyond its link's middle, and the stretches sum a drag that
-      // grows along the line as the midpoint rule does (second order in n; docs/MODEL.md section 12). The
-      // force moves along u to a point that also moves at s', so the drag's power gains f s'.
-      CABLE_LANE_LOOP
-      for (int i = 0; i < kBlockLanes; ++i) {
-        const Vec3 u = block.u[i];
-        const double far = constants.far_share[i] * (dot(u, block.moment[i]) - u.z * constants.weight_moment[i]);
-        block.far_drag[i] = far;
-        block.drag_power[i] += far * block.stretch_rate[i];
+      // The far half's skin friction (LinkConstants::far_tangential) on the far-end point, at the point's
+      // own velocity along the link, u . v_base + s' (u . u' = 0), and the current at its depth. Its power
+      // joins the drag's.
+      if (uniform) {
+        CABLE_LANE_LOOP
+        for (int i = 0; i < kBlockLanes; ++i) {
+          const Vec3 u = block.u[i];
+          const double speed = dot(u, block.base_vel[i]) + block.stretch_rate[i];  // the point's, along u
+          const double along = dot(u, current) - speed;
+          const double far = constants.far_tangential[i] * std::abs(along) * along;
+          block.far_drag[i] = far;
+          block.drag_power[i] += far * speed;
+        }
+      } else {
+        const int first = b * kBlockLanes, count = std::min(kBlockLanes, n - first);
+        for (int i = 0; i < count; ++i) {
+          const Vec3 u = block.u[i];
+          const double depth = block.base_pos.z[i] + (constants.length[i] + block.stretch[i]) * u.z;
+          const double speed = dot(u, block.base_vel[i]) + block.stretch_rate[i];
+          const double along = dot(u, toVec3(current_field.at(depth))) - speed;
+          const double far = constants.far_tangential[i] * std::abs(along) * along;
+          block.far_drag[i] = far;
+          block.drag_power[i] += far * speed;
+        }
       }
     }
     double power = 0.0;  // the padding lanes' drag is zero (zero length)

@@ -65,6 +65,7 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
     StiffLinkTerms& t = links_[k];
     const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
     t.axis = u;
+    t.far_damping = 0.0;
     // Joint k: bend across its mean axis, twist about it (the paper model's springs are not handled
     // here: the simulator refuses them with this integrator).
     if (bending) {
@@ -86,6 +87,14 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
       const Eigen::Vector3d relative = data.current.at(base.z() + 0.5 * l * u.z()) - v0;
       model.drag().damping(l, data.deployed.dragCoefficients(k), u, relative, blocks.get(&LinkBlock::axis_rate, k), t.drag_rr,
                            t.drag_rv, t.drag_vv);
+      // The far half's skin friction, c |w| w along u with w the flow past the far-end point along u:
+      // 2 c |w| per unit of the point's velocity (external_loads.cpp).
+      const double far_tangential = data.deployed.get(&LinkConstants::far_tangential, k);
+      if (far_tangential > 0.0) {
+        const double lever = l + blocks.get(&LinkBlock::stretch, k);
+        const double along = u.dot(data.current.at(base.z() + lever * u.z()) - v0) - blocks.get(&LinkBlock::stretch_rate, k);
+        t.far_damping = 2.0 * far_tangential * std::abs(along);
+      }
     } else if (contact.enabled()) {
       t.drag_rr.setZero();  // the seabed's damping adds to them below
       t.drag_rv.setZero();
@@ -219,6 +228,7 @@ void StiffArticulatedBody::clearExtra() {
     t.extra_torque.setZero();
     t.extra_force.setZero();
     t.stretch_extra = 0.0;
+    t.far_extra.setZero();
   }
   load_extra_.setZero();
 }
@@ -275,6 +285,10 @@ CABLE_HOT_PATH void StiffArticulatedBody::addJacobianTimes(const ChainModel& mod
     t.extra_torque += damping_factor * (t.drag_rr * r + t.drag_rv * v);
     t.extra_force += damping_factor * (t.drag_rv.transpose() * r + t.drag_vv * v);
     t.extra_torque += (stiffness_factor * t.geometric) * (r - r.dot(t.axis) * t.axis);  // (G.u) P r
+    if (t.far_damping > 0.0) {  // the far-end point moves as joint k + 1 (or the tip) does
+      const Eigen::Vector3d far = k + 1 < n ? Eigen::Vector3d(translation.col(k + 1)) : tip_translation;
+      t.far_extra += (damping_factor * t.far_damping * t.axis.dot(far)) * t.axis;
+    }
     if (t.in_contact) {
       const StiffContactTerms& c = contact_[k];
       t.extra_torque += stiffness_factor * (c.rr * r + c.rv * v);
@@ -324,8 +338,10 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
       const double far_mass = c.far_mass[i];
       const Vec3 far_acc = farEndKnownAcceleration(block.known_acc[i], block.beta[i], block.axis_rate[i],
                                                    l + block.stretch[i], block.stretch_rate[i]);
-      t.far_bias = far_mass * toEigen(far_acc) - c.far_weight[i] * Eigen::Vector3d::UnitZ() - block.far_drag[i] * u;
+      t.far_bias = far_mass * toEigen(far_acc) - c.far_weight[i] * Eigen::Vector3d::UnitZ() - block.far_drag[i] * u -
+                   t.far_extra;
       child_vv.diagonal().array() += far_mass;
+      child_vv += (cd * t.far_damping) * (u * u.transpose());
       child_pv += t.far_bias;
     }
     if (axial && !model.stretchLocked(k)) {
@@ -383,9 +399,8 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     const Eigen::Vector3d known = toEigen(block.known_acc[i]), beta = toEigen(block.beta[i]);
     const Eigen::Vector3d omega = toEigen(block.omega[i]), rate = toEigen(block.axis_rate[i]);
     const Eigen::Vector3d mean = l * known + (0.5 * l * l) * beta;
-    Eigen::Vector3d own_force = c.translational[i] * known + c.half_moment[i] * beta -
-                                (c.added[i] * u.dot(mean)) * u - toEigen(block.force[i]);
-    if (axial) own_force += block.far_drag[i] * u;  // the far-end point's share of the drag (far_bias)
+    const Eigen::Vector3d own_force = c.translational[i] * known + c.half_moment[i] * beta -
+                                      (c.added[i] * u.dot(mean)) * u - toEigen(block.force[i]);
     const Eigen::Vector3d own_moment = c.half_moment[i] * known + c.third_moment[i] * beta - toEigen(block.moment[i]);
     const double gyroscopic = c.polar[i] - c.thick_transverse[i];
     a_pr += u.cross(own_moment) + (gyroscopic * u.dot(omega)) * rate - toEigen(block.torque[i]) - t.extra_torque;
@@ -435,7 +450,9 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::solve(const ChainModel& 
     StiffLinkTerms& t = links_[k];
     if (axial) {  // the far-end point, at joint k + 1's acceleration
       const Eigen::Vector3d far_delta = k + 1 < n ? links_[k + 1].delta_acc : tip_delta_;
-      joint += data.deployed.get(&LinkConstants::far_mass, k) * far_delta + t.far_bias;
+      const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
+      joint += data.deployed.get(&LinkConstants::far_mass, k) * far_delta + (cd * t.far_damping * u.dot(far_delta)) * u +
+               t.far_bias;
     }
     joint += t.own_vr * t.angular_acc + t.own_vv * t.delta_acc + t.own_bias;
     t.tension = -joint.dot(blocks.get(&LinkBlock::u, k));

@@ -69,6 +69,10 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
                           drag_force, drag_moment);
   force += drag_force;
   moment += drag_moment;
+  // The far half's skin friction on the far-end point, at l + s along u (axial elasticity).
+  const double far = farDrag(i, u, p);
+  force += far * u;
+  moment += (l * far) * u;
   // The attachments' drag in the current at their points (external_loads.cpp at zero velocity).
   for (int a = model_.attachmentBegin(k); a < model_.attachmentBegin(k + 1); ++a) {
     const LinkAttachment& point = model_.attachments()[a];
@@ -82,12 +86,11 @@ void StaticEquations::linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Ve
 
 double StaticEquations::farDrag(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p) const {
   const int k = first_ + i;
-  if (!in_water_ || deployed_.get(&LinkConstants::far_share, k) == 0.0) return 0.0;
-  const double l = length_(i);
-  Eigen::Vector3d drag_force, drag_moment;
-  model_.drag().pointwise(current_, l, deployed_.dragCoefficients(k), p, Eigen::Vector3d::Zero(), u, Eigen::Vector3d::Zero(),
-                          drag_force, drag_moment);
-  return u.dot(drag_moment) / l;
+  const double coefficient = deployed_.get(&LinkConstants::far_tangential, k);
+  if (!in_water_ || coefficient == 0.0) return 0.0;
+  const double along = u.dot(current_.at(p.z() + length_(i) * u.z()));  // the flow past the point at rest
+  // On the far half of the stretched length, as linkLoads puts the body's drag on l + s.
+  return coefficient * (length_(i) / deployed_.get(&LinkConstants::length, k)) * std::abs(along) * along;
 }
 
 void StaticEquations::addSeabedContact(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,

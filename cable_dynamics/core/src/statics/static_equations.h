@@ -64,8 +64,8 @@ class StaticEquations {
   /// moment about the base end N [N m], as computeExternalLoads applies them at zero velocity.
   void linkLoads(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p, Eigen::Vector3d& force,
                  Eigen::Vector3d& moment) const;
-  /// The current's drag along deployed link i that its far-end point carries (docs/MODEL.md section 12):
-  /// u . (the drag's first moment) / l, as computeExternalLoads shares it; 0 without a far-end point [N].
+  /// The far half of deployed link i's skin friction in the current, on its far-end point at rest
+  /// (docs/MODEL.md section 12; computeExternalLoads at zero velocity); 0 without a far-end point [N].
   double farDrag(int i, const Eigen::Vector3d& u, const Eigen::Vector3d& p) const;
   /// The load's weight, drag and seabed contact at rest at tip position `tip` [m] (no coupling) [N].
   Eigen::Vector3d loadForceFree(const Eigen::Vector3d& tip) const;

@@ -201,8 +201,8 @@ StaticSolution solveAtStretch(const ChainModel& model, const ChainDeployment& de
 }
 
 /// The tension in link k's stretch in a solution, T_k = -(J_{k+1} - w_f e_z) . u_k + f_d: what is outboard
-/// of joint k + 1 (the load's pull at the last), the far-end point's weight w_f and its share f_d of the
-/// drag along the link (docs/MODEL.md section 12) [N].
+/// of joint k + 1 (the load's pull at the last), the far-end point's weight w_f and the far half's skin
+/// friction f_d (docs/MODEL.md section 12) [N].
 double farEndTension(const ChainDeployment& deployed, const StaticSolution& solved, int k, int n) {
   const Eigen::Vector3d outboard = k + 1 < n ? Eigen::Vector3d(solved.joint_force.col(k + 1)) : solved.tip_force;
   const double far_weight = deployed.get(&LinkConstants::far_weight, k);

@@ -107,8 +107,8 @@ struct alignas(64) LinkConstants {
   double axial_damping[kBlockLanes];    ///< c_a / l, its damper on the stretch rate [N s/m]
   double far_mass[kBlockLanes];         ///< m/2 carried at the far end beyond the stretch (0: rigid) [kg]
   double far_weight[kBlockLanes];       ///< its submerged weight, + down [N]
-  double far_share[kBlockLanes];        ///< 1 / l where there is a far-end point, else 0: the point's share
-                                        ///< of the drag along the link per unit first moment [1/m]
+  double far_tangential[kBlockLanes];   ///< the far half's skin friction, drag_tangential l / 2 with the body's
+                                        ///< drag_tangential then halved (0: no far-end point) [kg/m]
 };
 
 /// Eight links' state-derived quantities and the recursion's intermediate results, rewritten by every
@@ -130,8 +130,8 @@ struct alignas(64) LinkBlock {
   double damped_rate[kBlockLanes];   ///< the rate its damper reads, AxialSpring::dampedRate [m/s]
   double axial_tension[kBlockLanes]; ///< the stretch's spring and damper, tension only [N]
   double axial_loss[kBlockLanes];    ///< power its damper takes out [W]
-  double far_drag[kBlockLanes];      ///< the drag along u carried by the far-end point, u . (drag's first
-                                     ///< moment) / l (+ outwards; external_loads.cpp) [N]
+  double far_drag[kBlockLanes];      ///< the far half's skin friction on the far-end point, along u at the
+                                     ///< point's own velocity (+ outwards; external_loads.cpp) [N]
   // External loads (external_loads.cpp, joint_torques.cpp).
   Lanes3 force;        ///< total external force on the link [N]
   Lanes3 moment;       ///< its first moment about the base end [N m]

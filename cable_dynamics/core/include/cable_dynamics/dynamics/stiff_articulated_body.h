@@ -47,6 +47,10 @@ struct StiffLinkTerms {
   /// The seabed's damping adds to them.
   Eigen::Matrix3d drag_rr = Eigen::Matrix3d::Zero(), drag_rv = Eigen::Matrix3d::Zero(), drag_vv = Eigen::Matrix3d::Zero();
   bool in_contact = false;  ///< the link's seabed stiffness (StiffContactTerms) is not zero
+  /// The far half's skin friction on the far-end point (axial elasticity): its damping along u per unit
+  /// of the point's velocity [N s/m], and what the stage adds to the point's right-hand side [N].
+  double far_damping = 0.0;
+  Eigen::Vector3d far_extra = Eigen::Vector3d::Zero();
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< u at the linearization
   double geometric = 0.0;  ///< G . u, the geometric stiffness across the link [N m/rad]
   Eigen::Vector3d extra_torque = Eigen::Vector3d::Zero();  ///< added to the right-hand side: about the base end [N m]

@@ -85,8 +85,8 @@ struct StaticSolution {
   /// Axial elasticity: each link's stretch at equilibrium, s_k = T_k l_k / EA_k with T_k the tension at
   /// its far end [m] (n; empty with rigid links), and the fixed-point sweeps that found it.
   Eigen::VectorXd stretch;
-  /// Axial elasticity: the current's drag along each link that its far-end point carries [N] (n; zero
-  /// without far-end points), part of the tension at the far end.
+  /// Axial elasticity: the far half of each link's skin friction in the current, on its far-end point [N]
+  /// (n; zero without far-end points), part of the tension at the far end.
   Eigen::VectorXd far_drag;
   int elastic_sweeps = 0;
 };
