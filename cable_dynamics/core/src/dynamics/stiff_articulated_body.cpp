@@ -112,7 +112,9 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
   for (int k = n - 1; k >= first && !use_last_tension; --k) {
     StiffLinkTerms& t = links_[k];
     const Eigen::Vector3d u = blocks.get(&LinkBlock::u, k);
-    outboard.z() += data.deployed.get(&LinkConstants::far_weight, k);  // the far-end point's (axial elasticity)
+    // The far-end point's weight and skin friction (axial elasticity).
+    outboard.z() += data.deployed.get(&LinkConstants::far_weight, k);
+    outboard += blocks.get(&LinkBlock::far_drag, k) * u;
     const Eigen::Vector3d g = t.lever * outboard + blocks.get(&LinkBlock::moment, k);
     t.geometric = std::max(0.0, g.dot(u));
     outboard += blocks.get(&LinkBlock::force, k);
