@@ -25,8 +25,8 @@ CABLE_HOT_PATH void kineticAndPotentialEnergy(const ChainModel& model, const Cha
     }
   }
   // With axial elasticity, each link's far-end point beyond its stretch (LinkConstants::far_mass), at l + s
-  // along u; rigid links have none, and their energy check skips the pass.
-  for (int b = data.deployed.firstBlock(); model.axial() && b < data.links.blocks(); ++b) {
+  // along u; rigid links and a winch's have none, and their energy check skips the pass.
+  for (int b = data.deployed.firstBlock(); model.farEndPoints() && b < data.links.blocks(); ++b) {
     const LinkConstants& constants = data.deployed.block(b);
     const LinkBlock& block = data.links.block(b);
     for (int i = 0; i < kBlockLanes; ++i) {

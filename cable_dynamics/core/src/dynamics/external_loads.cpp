@@ -9,6 +9,35 @@
 #include "cable_dynamics/dynamics/seabed_contact.h"
 
 namespace cable_dynamics {
+namespace {
+
+/// The far half's skin friction (LinkConstants::far_tangential) on each far-end point of a block's `lanes`
+/// links, at the point's own velocity along the link, u . v_base + s' (u . u' = 0), and the current at its
+/// depth: LinkBlock::far_drag, and its power added to the drag's.
+EIGEN_ALWAYS_INLINE void addFarSkinFriction(const CurrentField& field, const LinkConstants& constants, LinkBlock& block,
+                                            int lanes) {
+  double flow[kBlockLanes];  // the current along u at each far-end point [m/s]; 0 in the padding lanes
+  if (field.uniform()) {
+    const Vec3 current = toVec3(field.uniformValue());
+    for (int i = 0; i < kBlockLanes; ++i) flow[i] = dot(block.u[i], current);
+  } else {
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const Vec3 u = block.u[i];
+      const double depth = block.base_pos.z[i] + (constants.length[i] + block.stretch[i]) * u.z;
+      flow[i] = i < lanes ? dot(u, toVec3(field.at(depth))) : 0.0;
+    }
+  }
+  CABLE_LANE_LOOP
+  for (int i = 0; i < kBlockLanes; ++i) {
+    const double speed = dot(block.u[i], block.base_vel[i]) + block.stretch_rate[i];  // the point's, along u
+    const double along = flow[i] - speed;
+    const double far = constants.far_tangential[i] * std::abs(along) * along;
+    block.far_drag[i] = far;
+    block.drag_power[i] += far * speed;
+  }
+}
+
+}  // namespace
 
 CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& data, const EndInputs& ends) {
   const int n = model.links();
@@ -28,8 +57,10 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
       block.force.set(i, {0.0, 0.0, constants.weight[i]});
       block.moment.set(i, {0.0, 0.0, constants.weight_moment[i]});
     }
-    if (far_points) std::fill(std::begin(block.far_drag), std::end(block.far_drag), 0.0);
-    if (!in_water) continue;
+    if (!in_water) {
+      if (far_points) std::fill(std::begin(block.far_drag), std::end(block.far_drag), 0.0);
+      continue;
+    }
     if (uniform) {
       model.drag().addUniform(current, constants, block);
     } else {
@@ -44,33 +75,7 @@ CABLE_HOT_PATH void computeExternalLoads(const ChainModel& model, ChainData& dat
         block.drag_power[i] = fd.dot(toEigen(block.base_vel[i])) + md.dot(toEigen(block.axis_rate[i]));
       }
     }
-    if (far_points) {
-      // The far half's skin friction (LinkConstants::far_tangential) on the far-end point, at the point's
-      // own velocity along the link, u . v_base + s' (u . u' = 0), and the current at its depth. Its power
-      // joins the drag's.
-      if (uniform) {
-        CABLE_LANE_LOOP
-        for (int i = 0; i < kBlockLanes; ++i) {
-          const Vec3 u = block.u[i];
-          const double speed = dot(u, block.base_vel[i]) + block.stretch_rate[i];  // the point's, along u
-          const double along = dot(u, current) - speed;
-          const double far = constants.far_tangential[i] * std::abs(along) * along;
-          block.far_drag[i] = far;
-          block.drag_power[i] += far * speed;
-        }
-      } else {
-        const int first = b * kBlockLanes, count = std::min(kBlockLanes, n - first);
-        for (int i = 0; i < count; ++i) {
-          const Vec3 u = block.u[i];
-          const double depth = block.base_pos.z[i] + (constants.length[i] + block.stretch[i]) * u.z;
-          const double speed = dot(u, block.base_vel[i]) + block.stretch_rate[i];
-          const double along = dot(u, toVec3(current_field.at(depth))) - speed;
-          const double far = constants.far_tangential[i] * std::abs(along) * along;
-          block.far_drag[i] = far;
-          block.drag_power[i] += far * speed;
-        }
-      }
-    }
+    if (far_points) addFarSkinFriction(current_field, constants, block, std::min(kBlockLanes, n - b * kBlockLanes));
     double power = 0.0;  // the padding lanes' drag is zero (zero length)
     for (int i = 0; i < kBlockLanes; ++i) power += block.drag_power[i];
     drag_power += power;

@@ -87,14 +87,10 @@ CABLE_HOT_PATH CABLE_FLATTEN void StiffArticulatedBody::linearize(const ChainMod
       const Eigen::Vector3d relative = data.current.at(base.z() + 0.5 * l * u.z()) - v0;
       model.drag().damping(l, data.deployed.dragCoefficients(k), u, relative, blocks.get(&LinkBlock::axis_rate, k), t.drag_rr,
                            t.drag_rv, t.drag_vv);
-      // The far half's skin friction, c |w| w along u with w the flow past the far-end point along u:
-      // 2 c |w| per unit of the point's velocity (external_loads.cpp).
+      // The far half's skin friction f = c |w| w along u, with w the flow past the far-end point along u
+      // (external_loads.cpp, at this state): 2 c |w| = 2 sqrt(c |f|) per unit of the point's velocity.
       const double far_tangential = data.deployed.get(&LinkConstants::far_tangential, k);
-      if (far_tangential > 0.0) {
-        const double lever = l + blocks.get(&LinkBlock::stretch, k);
-        const double along = u.dot(data.current.at(base.z() + lever * u.z()) - v0) - blocks.get(&LinkBlock::stretch_rate, k);
-        t.far_damping = 2.0 * far_tangential * std::abs(along);
-      }
+      t.far_damping = 2.0 * std::sqrt(far_tangential * std::abs(blocks.get(&LinkBlock::far_drag, k)));
     } else if (contact.enabled()) {
       t.drag_rr.setZero();  // the seabed's damping adds to them below
       t.drag_rv.setZero();
